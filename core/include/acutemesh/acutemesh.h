@@ -1,0 +1,139 @@
+// acutemesh: Delaunay, constrained Delaunay and acute/non-obtuse triangulation of planar
+// straight-line graphs. One entry point, `mesh()`, flat arrays in and out.
+//
+// Conventions shared by every function in this header:
+//  - Coordinates are interleaved doubles: x0, y0, x1, y1, ...
+//  - Index lists are flat uint32: segments a0, b0, a1, b1, ...; triangles a, b, c, ... (CCW).
+//  - Mesh vertex i equals input vertex i for every i < input vertex count (exact copy), so
+//    input indices stay valid in the output. A duplicate input vertex, or one outside the
+//    domain, is kept at its index but used by no triangle. Steiner points follow the input.
+//  - Nothing throws and nothing aborts: failures come back as a Status with a message.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace acutemesh {
+
+// Process exit codes of the CLI use the same numbers.
+enum class Status : int {
+  Ok = 0,
+  TargetNotMet = 1,  // a budget ended first; the best mesh so far is returned
+  BadInput = 2,      // malformed or degenerate input; message says which item and why
+  Cancelled = 3,     // Options::cancel was set; the best mesh so far is returned
+};
+
+enum class Mode {
+  Delaunay,   // Delaunay triangulation of the vertices; segments and holes ignored
+  Cdt,        // constrained Delaunay triangulation of the PSLG, restricted to its domain
+  Quality,    // (refinement modes come with the refinement module)
+  NonObtuse,
+  Acute,
+};
+
+// Which triangles of the constrained triangulation form the domain.
+enum class FillRule {
+  Triangle,  // Triangle's semantics: remove from the convex hull inward up to segments, then
+             // remove the regions containing hole points.
+  EvenOdd,   // keep regions whose winding number (segments as directed edges a->b) is odd
+  NonZero,   // keep regions whose winding number is non-zero
+};
+
+// A planar straight-line graph. Segments may cross, overlap, touch vertices or have zero
+// length: mesh() resolves all of these (see Stats::warnings).
+struct Pslg {
+  std::vector<double> points;      // x, y per vertex
+  std::vector<uint32_t> segments;  // a, b per segment (directed a->b: matters for NonZero)
+  std::vector<double> holes;       // x, y per hole seed point (FillRule::Triangle only)
+
+  size_t vertexCount() const { return points.size() / 2; }
+  size_t segmentCount() const { return segments.size() / 2; }
+};
+
+struct Progress {
+  const char* phase;     // "delaunay", "constrain", "domain", ...
+  double fraction;       // 0..1 within the phase, or -1 when unknown
+  uint32_t vertices;     // current vertex count
+};
+
+struct Options {
+  Mode mode = Mode::Cdt;
+  FillRule fill = FillRule::Triangle;
+  bool convexHull = false;        // keep every triangle of the convex hull (Triangle's -c)
+  double maxAngle = 90.0;         // degrees, acute mode: every angle < maxAngle
+  double minAngle = 0.0;          // degrees, quality target (0 = none)
+  double maxArea = 0.0;           // area bound (0 = none)
+  uint32_t maxSteiner = 0;        // Steiner point budget (0 = unlimited)
+  double timeLimit = 0.0;         // seconds (0 = unlimited)
+  const std::atomic<bool>* cancel = nullptr;          // set to true to stop early
+  std::function<void(const Progress&)> progress;      // called now and then from long runs
+};
+
+struct Mesh {
+  std::vector<double> points;       // x, y per vertex; input vertices first, at their indices
+  std::vector<uint32_t> triangles;  // a, b, c per triangle, counter-clockwise
+  std::vector<uint32_t> segments;   // a, b per mesh edge lying on an input segment
+  std::vector<uint8_t> vertexKind;  // per vertex: see VertexKind
+
+  size_t vertexCount() const { return points.size() / 2; }
+  size_t triangleCount() const { return triangles.size() / 3; }
+};
+
+enum VertexKind : uint8_t {
+  kInputVertex = 0,     // copied from the input
+  kUnusedVertex = 1,    // input vertex used by no triangle (duplicate, or outside the domain)
+  kSegmentVertex = 2,   // Steiner point on an input segment (crossings, splits)
+  kFreeVertex = 3,      // Steiner point in the interior
+};
+
+struct PhaseTime {
+  std::string phase;
+  double seconds;
+};
+
+struct Stats {
+  uint32_t inputVertices = 0, inputSegments = 0, inputHoles = 0;
+  uint32_t vertices = 0, triangles = 0, segments = 0;  // of the output mesh
+  uint32_t steiner = 0;             // vertices added (segment crossings count too)
+  uint32_t duplicates = 0;          // input vertices merged into an earlier equal one
+  double minAngle = 0, maxAngle = 0;  // degrees, over all output triangles
+  uint32_t nonAcute = 0;            // triangles with a corner >= 90 degrees (exact)
+  uint32_t obtuse = 0;              // triangles with a corner > 90 degrees (exact)
+  std::vector<PhaseTime> phases;    // wall time per phase
+  double seconds = 0;               // total wall time of mesh()
+  std::vector<std::string> warnings;
+};
+
+struct Result {
+  Status status = Status::Ok;
+  std::string message;  // empty when Ok; otherwise one line: which item, what is wrong
+  Mesh mesh;
+  Stats stats;
+};
+
+// Triangulates `input` as `options.mode` says.
+Result mesh(const Pslg& input, const Options& options = {});
+
+struct Validation {
+  bool ok = true;
+  std::vector<std::string> errors;  // first few problems found, each naming the item
+};
+
+// Exact checks of `mesh` against `input` (predicates only, no tolerance):
+//  - every triangle strictly counter-clockwise; each edge used at most once per direction,
+//    so at most two triangles share an edge, with opposite orientation;
+//  - no vertex star wraps around more than once (no folded or overlapping triangles);
+//  - mesh vertex i == input vertex i; every used input vertex referenced by a triangle; an
+//    unused input vertex lies in no triangle;
+//  - every input segment of non-zero length is a chain of collinear mesh edges;
+//  - domain: every boundary edge lies on an input segment (or on the convex hull when
+//    options.convexHull or mode Delaunay); no hole point (Triangle fill) lies in a triangle;
+//    with EvenOdd/NonZero every triangle lies in a region the rule keeps.
+Validation validate(const Pslg& input, const Mesh& mesh, const Options& options = {});
+
+const char* version();
+
+}  // namespace acutemesh
