@@ -100,7 +100,14 @@ if ((do_npm)) && [[ -f package.json ]]; then
       exit 1
     fi
     echo "setup: installing npm packages"
-    npm install --no-audit --no-fund --loglevel=error </dev/null
+    log="$(mktemp)"
+    if ! npm install --no-audit --no-fund </dev/null >"$log" 2>&1; then
+      tail -n 30 "$log" >&2
+      rm -f "$log"
+      echo "setup: npm install failed" >&2
+      exit 1
+    fi
+    rm -f "$log"
     [[ -d node_modules ]] && touch node_modules
     installed=$((installed + 1))
   fi
