@@ -1,1 +1,224 @@
-// placeholder
+// Segment insertion for the constrained Delaunay triangulation.
+//
+// Each input segment is inserted as a chain of fixed edges. Walking from one end toward the
+// other, every decision is an exact orientation test: a vertex exactly on the segment splits
+// it there, an already fixed edge crossed by it yields a new vertex at the crossing (both
+// segments then pass through that vertex), and otherwise the crossed edges are flipped away
+// (Sloan's method) and Delaunay is restored with Lawson flips around the new fixed edge.
+#include <deque>
+
+#include "acutemesh/predicates.h"
+#include "build.h"
+
+namespace acutemesh::detail {
+namespace {
+
+struct Piece {
+  uint32_t from, to;
+  int dir;  // winding contribution along from->to
+};
+
+class SegmentInserter {
+ public:
+  SegmentInserter(Triangulation& T, const Budget& budget) : T_(T), budget_(budget) {}
+
+  StepResult insert(uint32_t a, uint32_t b, uint64_t crossingBudget);
+  uint64_t crossings() const { return crossings_; }
+
+ private:
+  const double* P(uint32_t v) const { return T_.point(v); }
+  // Returns the half-edge leaving u toward the segment's interior: an edge u->w with w on the
+  // segment (*collinear set), or the edge w->x of the triangle (u, w, x) that the segment
+  // crosses first.
+  uint32_t firstStep(uint32_t u, uint32_t v, bool* collinear) const;
+  bool splitAtCrossing(const Piece& piece, uint32_t crossed);
+  void flipAway(uint32_t u, uint32_t end, std::vector<uint32_t>& crossedEdges);
+
+  Triangulation& T_;
+  const Budget& budget_;
+  std::vector<Piece> todo_;
+  uint64_t crossings_ = 0;
+};
+
+uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) const {
+  uint32_t e0 = T_.vertexEdge[u], e = e0;
+  do {
+    uint32_t w = T_.tri[next(e)], x = T_.tri[prev(e)];
+    if (w == v) {
+      *collinear = true;
+      return e;
+    }
+    if (w != kGhost && x != kGhost) {
+      double ow = orient2d(P(u), P(w), P(v));
+      if (ow == 0 && dot2d(P(u), P(w), P(v)) > 0) {
+        *collinear = true;
+        return e;
+      }
+      if (ow > 0 && orient2d(P(u), P(x), P(v)) < 0) {
+        *collinear = false;
+        return next(e);
+      }
+    }
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  return kNone;
+}
+
+// The segment piece crosses the fixed edge `crossed`: add a vertex at the crossing and route
+// both the piece and the fixed edge through it. Returns false if no vertex could be placed.
+bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
+  uint32_t w = T_.tri[crossed], x = T_.tri[next(crossed)];
+  const double *u = P(piece.from), *v = P(piece.to), *pw = P(w), *px = P(x);
+  double ou = orient2d(pw, px, u), ov = orient2d(pw, px, v);
+  double s = ou / (ou - ov);
+  double p[2] = {u[0] + s * (v[0] - u[0]), u[1] + s * (v[1] - u[1])};
+  int windOfCrossed = T_.trackWinding ? T_.wind[crossed] : 0;
+  uint32_t q = T_.addVertex(p[0], p[1]);
+  Location loc = T_.locate(p, crossed / 3);
+  bool onCrossed = loc.where == Where::OnEdge &&
+                   (loc.edge == crossed || loc.edge == T_.opp[crossed]);
+  uint32_t r = T_.insertAt(q, loc);
+  if (r == kNone) return false;
+  if (r != q) {  // rounded onto an existing vertex: drop the unused new one
+    T_.pts.resize(T_.pts.size() - 2);
+    T_.vertexEdge.pop_back();
+  }
+  if (!onCrossed && r != w && r != x) {
+    // The rounded crossing point is off the fixed edge: re-route that edge through it.
+    uint32_t old = T_.findEdge(w, x);
+    if (old != kNone) {
+      T_.unfixEdge(old);
+      todo_.push_back({w, r, windOfCrossed});
+      todo_.push_back({r, x, windOfCrossed});
+      std::vector<uint32_t> stack{old};
+      T_.legalize(stack);
+    }
+  }
+  todo_.push_back({r, piece.to, piece.dir});
+  todo_.push_back({piece.from, r, piece.dir});
+  return true;
+}
+
+// Flips the edges crossed by u->end until none is left (Sloan 1993: a crossed edge whose
+// quadrilateral is convex can always be flipped, and one always is), then restores the
+// Delaunay property around the new edges.
+void SegmentInserter::flipAway(uint32_t u, uint32_t end, std::vector<uint32_t>& crossedEdges) {
+  std::deque<std::pair<uint32_t, uint32_t>> queue;
+  for (uint32_t e : crossedEdges) queue.emplace_back(T_.tri[e], T_.tri[next(e)]);
+  std::vector<std::pair<uint32_t, uint32_t>> created;
+  while (!queue.empty()) {
+    auto [w, x] = queue.front();
+    queue.pop_front();
+    uint32_t e = T_.findEdge(w, x);
+    uint32_t c = T_.tri[prev(e)], d = T_.tri[prev(T_.opp[e])];
+    if (orient2d(P(c), P(w), P(d)) <= 0 || orient2d(P(d), P(x), P(c)) <= 0) {
+      queue.emplace_back(w, x);
+      continue;
+    }
+    T_.flip(e);
+    double oc = orient2d(P(u), P(end), P(c)), od = orient2d(P(u), P(end), P(d));
+    if ((oc > 0 && od < 0) || (oc < 0 && od > 0))
+      queue.emplace_back(c, d);
+    else
+      created.emplace_back(c, d);
+  }
+  std::vector<uint32_t>& stack = T_.scratch();
+  stack.clear();
+  for (auto [c, d] : created) {
+    uint32_t e = T_.findEdge(c, d);
+    if (e != kNone) stack.push_back(e);
+  }
+  T_.legalize(stack);
+}
+
+StepResult SegmentInserter::insert(uint32_t a, uint32_t b, uint64_t crossingBudget) {
+  todo_.assign(1, {a, b, 1});
+  std::vector<uint32_t> crossedEdges;
+  while (!todo_.empty()) {
+    Piece piece = todo_.back();
+    todo_.pop_back();
+    uint32_t u = piece.from, v = piece.to;
+    if (u == v) continue;
+    bool collinear = false;
+    uint32_t h = firstStep(u, v, &collinear);
+    if (h == kNone) return {Status::BadInput, "internal: no way from vertex " +
+                                                  std::to_string(u) + " toward " +
+                                                  std::to_string(v)};
+    if (collinear) {
+      T_.fixEdge(h, piece.dir);
+      todo_.push_back({T_.tri[next(h)], v, piece.dir});
+      continue;
+    }
+    // Walk across the triangles the piece passes through. Crossed edges run from the
+    // vertex right of u->v to the one left of it.
+    crossedEdges.clear();
+    uint32_t end = kNone;
+    bool split = false;
+    while (true) {
+      if (T_.isFixed(h)) {
+        if (++crossings_ > crossingBudget || budget_.stop())
+          return {budget_.cancelled() ? Status::Cancelled : Status::BadInput,
+                  "too many segment crossings to resolve (" + std::to_string(crossings_) + ")"};
+        if (!splitAtCrossing(piece, h))
+          return {Status::BadInput, "could not place the crossing point of two segments"};
+        split = true;
+        break;
+      }
+      crossedEdges.push_back(h);
+      uint32_t g = T_.opp[h], y = T_.tri[prev(g)];
+      if (y == v) {
+        end = v;
+        break;
+      }
+      double o = orient2d(P(u), P(v), P(y));
+      if (o == 0) {
+        end = y;
+        break;
+      }
+      h = o > 0 ? next(g) : prev(g);
+    }
+    if (split) continue;
+    flipAway(u, end, crossedEdges);
+    uint32_t e = T_.findEdge(u, end);
+    if (e == kNone)
+      return {Status::BadInput, "internal: segment piece " + std::to_string(u) + "-" +
+                                    std::to_string(end) + " missing after flips"};
+    T_.fixEdge(e, piece.dir);
+    if (end != v) todo_.push_back({end, v, piece.dir});
+  }
+  return {};
+}
+
+}  // namespace
+
+StepResult insertSegments(Triangulation& T, const Pslg& input,
+                          const std::vector<uint32_t>& canonical, Stats& stats,
+                          const Budget& budget) {
+  SegmentInserter inserter(T, budget);
+  size_t n = input.segmentCount();
+  // Rounded crossing points can create a few more crossings; a budget far above any real
+  // input's crossing count turns a pathological cascade into an error instead of a hang.
+  uint64_t crossingBudget = 64ull * n * n + 4096;
+  uint32_t zeroLength = 0;
+  for (size_t s = 0; s < n; ++s) {
+    uint32_t a = canonical[input.segments[2 * s]], b = canonical[input.segments[2 * s + 1]];
+    if (a == b) {
+      if (++zeroLength <= 5)
+        stats.warnings.push_back("segment " + std::to_string(s) + " has zero length; dropped");
+      continue;
+    }
+    StepResult r = inserter.insert(a, b, crossingBudget);
+    if (!r.ok()) {
+      r.message = "segment " + std::to_string(s) + ": " + r.message;
+      return r;
+    }
+  }
+  if (zeroLength > 5)
+    stats.warnings.push_back(std::to_string(zeroLength) + " zero-length segments dropped");
+  if (inserter.crossings() > 0)
+    stats.warnings.push_back(std::to_string(inserter.crossings()) +
+                             " segment crossings split at new vertices");
+  return {};
+}
+
+}  // namespace acutemesh::detail

@@ -1,1 +1,191 @@
-// placeholder
+// mesh(): the one entry point. Input checks, then the construction steps of build.h in order,
+// then the output mesh and its figures.
+#include <cmath>
+
+#include "acutemesh/acutemesh.h"
+#include "acutemesh/predicates.h"
+#include "build.h"
+
+namespace acutemesh {
+namespace {
+
+using detail::Budget;
+using detail::kNone;
+using detail::StepResult;
+using detail::Triangulation;
+
+std::string checkInput(const Pslg& in) {
+  if (in.points.size() % 2) return "points array has odd length " + std::to_string(in.points.size());
+  if (in.segments.size() % 2)
+    return "segments array has odd length " + std::to_string(in.segments.size());
+  if (in.holes.size() % 2) return "holes array has odd length " + std::to_string(in.holes.size());
+  size_t n = in.vertexCount();
+  if (n >= detail::kGhost) return "too many vertices (" + std::to_string(n) + ")";
+  for (size_t i = 0; i < n; ++i)
+    if (!std::isfinite(in.points[2 * i]) || !std::isfinite(in.points[2 * i + 1]))
+      return "vertex " + std::to_string(i) + " has a non-finite coordinate";
+  for (size_t s = 0; s < in.segmentCount(); ++s)
+    for (int k = 0; k < 2; ++k)
+      if (in.segments[2 * s + k] >= n)
+        return "segment " + std::to_string(s) + " refers to vertex " +
+               std::to_string(in.segments[2 * s + k]) + ", but there are only " +
+               std::to_string(n) + " vertices";
+  for (size_t h = 0; h < in.holes.size(); ++h)
+    if (!std::isfinite(in.holes[h])) return "hole " + std::to_string(h / 2) + " is not finite";
+  return {};
+}
+
+double cornerAngle(const double* a, const double* b, const double* c) {
+  double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180.0 / M_PI);
+}
+
+// Copies the domain's triangles out, keeping input vertices at their indices and numbering
+// the Steiner points that are used after them.
+void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside, uint32_t inputCount,
+                 Mesh& mesh) {
+  uint32_t slots = T.triangleSlots(), total = T.vertexCount();
+  std::vector<uint32_t> index(total, kNone);
+  for (uint32_t v = 0; v < inputCount; ++v) index[v] = v;
+  uint32_t nextIndex = inputCount, triangles = 0;
+  std::vector<uint8_t> used(total, 0);
+  for (uint32_t t = 0; t < slots; ++t) {
+    if (!inside[t]) continue;
+    ++triangles;
+    for (int k = 0; k < 3; ++k) {
+      uint32_t v = T.tri[3 * t + k];
+      used[v] = 1;
+      if (index[v] == kNone) index[v] = nextIndex++;
+    }
+  }
+  mesh.points.assign(2 * size_t(nextIndex), 0.0);
+  mesh.vertexKind.assign(nextIndex, kInputVertex);
+  for (uint32_t v = 0; v < total; ++v) {
+    if (index[v] == kNone) continue;
+    mesh.points[2 * size_t(index[v])] = T.pts[2 * size_t(v)];
+    mesh.points[2 * size_t(index[v]) + 1] = T.pts[2 * size_t(v) + 1];
+    if (v < inputCount)
+      mesh.vertexKind[v] = used[v] ? kInputVertex : kUnusedVertex;
+    else
+      mesh.vertexKind[index[v]] = kSegmentVertex;
+  }
+  mesh.triangles.clear();
+  mesh.triangles.reserve(3 * size_t(triangles));
+  mesh.segments.clear();
+  for (uint32_t t = 0; t < slots; ++t) {
+    if (!inside[t]) continue;
+    for (int k = 0; k < 3; ++k) {
+      uint32_t e = 3 * t + k;
+      mesh.triangles.push_back(index[T.tri[e]]);
+      // A fixed edge is reported once, from an inside triangle.
+      if (T.fixed[e] && (!inside[T.opp[e] / 3] || e < T.opp[e])) {
+        mesh.segments.push_back(index[T.tri[e]]);
+        mesh.segments.push_back(index[T.tri[detail::next(e)]]);
+      }
+    }
+  }
+}
+
+void measureAngles(const Mesh& mesh, Stats& stats) {
+  double lo = 180, hi = 0;
+  uint32_t nonAcute = 0, obtuse = 0;
+  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const double* p[3];
+    for (int k = 0; k < 3; ++k) p[k] = &mesh.points[2 * size_t(mesh.triangles[3 * t + k])];
+    bool right = false, blunt = false;
+    for (int k = 0; k < 3; ++k) {
+      const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+      double angle = cornerAngle(a, b, c);
+      lo = std::min(lo, angle), hi = std::max(hi, angle);
+      double d = dot2d(a, b, c);
+      right |= d <= 0;
+      blunt |= d < 0;
+    }
+    nonAcute += right;
+    obtuse += blunt;
+  }
+  stats.minAngle = mesh.triangleCount() ? lo : 0;
+  stats.maxAngle = mesh.triangleCount() ? hi : 0;
+  stats.nonAcute = nonAcute;
+  stats.obtuse = obtuse;
+}
+
+}  // namespace
+
+const char* version() { return "0.1.0"; }
+
+Result mesh(const Pslg& input, const Options& options) {
+  Result result;
+  Stats& stats = result.stats;
+  Budget budget(options);
+  stats.inputVertices = uint32_t(input.vertexCount());
+  stats.inputSegments = uint32_t(input.segmentCount());
+  stats.inputHoles = uint32_t(input.holes.size() / 2);
+  auto fail = [&](Status status, std::string message) {
+    result.status = status;
+    result.message = std::move(message);
+    stats.seconds = budget.elapsed();
+    return result;
+  };
+  std::string bad = checkInput(input);
+  if (!bad.empty()) return fail(Status::BadInput, bad);
+  if (options.mode != Mode::Delaunay && options.mode != Mode::Cdt)
+    return fail(Status::BadInput,
+                "refinement modes (quality, nonobtuse, acute) are not available in this version");
+
+  double phaseStart = 0;
+  auto endPhase = [&](const char* name) {
+    double now = budget.elapsed();
+    stats.phases.push_back({name, now - phaseStart});
+    phaseStart = now;
+    if (options.progress) options.progress({name, 1.0, 0});
+  };
+
+  bool constrained = options.mode != Mode::Delaunay;
+  Options domainOptions = options;
+  if (!constrained) domainOptions.fill = FillRule::Triangle;
+
+  Triangulation T;
+  uint32_t n = uint32_t(input.vertexCount());
+  T.trackWinding = constrained && options.fill != FillRule::Triangle;
+  T.pts = input.points;
+  T.vertexEdge.assign(n, kNone);
+  // Each vertex makes about two triangles; reserving avoids regrowth copies.
+  T.tri.reserve(6 * size_t(n) + 12);
+  T.opp.reserve(6 * size_t(n) + 12);
+  T.fixed.reserve(6 * size_t(n) + 12);
+
+  std::vector<uint32_t> canonical;
+  StepResult step = detail::buildDelaunay(T, n, canonical, budget);
+  if (!step.ok()) return fail(step.status, step.message);
+  for (uint32_t i = 0; i < n; ++i) stats.duplicates += canonical[i] != i;
+  if (stats.duplicates)
+    stats.warnings.push_back(std::to_string(stats.duplicates) +
+                             " duplicate vertices merged into earlier equal ones");
+  endPhase("delaunay");
+
+  if (constrained) {
+    step = detail::insertSegments(T, input, canonical, stats, budget);
+    if (!step.ok()) return fail(step.status, step.message);
+    endPhase("segments");
+  }
+
+  bool keepHull = !constrained || options.convexHull || input.segments.empty();
+  std::vector<uint8_t> inside = detail::classifyDomain(
+      T, constrained ? input : Pslg{}, domainOptions, keepHull);
+  endPhase("domain");
+
+  extractMesh(T, inside, n, result.mesh);
+  stats.vertices = uint32_t(result.mesh.vertexCount());
+  stats.triangles = uint32_t(result.mesh.triangleCount());
+  stats.segments = uint32_t(result.mesh.segments.size() / 2);
+  stats.steiner = stats.vertices - n;
+  if (stats.triangles == 0)
+    stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
+  measureAngles(result.mesh, stats);
+  endPhase("output");
+  stats.seconds = budget.elapsed();
+  return result;
+}
+
+}  // namespace acutemesh

@@ -1,1 +1,395 @@
-// placeholder
+#include "triangulation.h"
+
+#include "acutemesh/predicates.h"
+
+namespace acutemesh::detail {
+
+uint32_t Triangulation::addVertex(double x, double y) {
+  pts.push_back(x);
+  pts.push_back(y);
+  vertexEdge.push_back(kNone);
+  return vertexCount() - 1;
+}
+
+uint32_t Triangulation::newTriangle() {
+  if (!freeSlots_.empty()) {
+    uint32_t t = freeSlots_.back();
+    freeSlots_.pop_back();
+    return t;
+  }
+  uint32_t t = triangleSlots();
+  tri.resize(tri.size() + 3, kNone);
+  opp.resize(opp.size() + 3, kNone);
+  fixed.resize(fixed.size() + 3, 0);
+  if (trackWinding) wind.resize(wind.size() + 3, 0);
+  return t;
+}
+
+void Triangulation::freeTriangle(uint32_t t) {
+  for (int k = 0; k < 3; ++k) {
+    tri[3 * t + k] = kNone;
+    opp[3 * t + k] = kNone;
+    fixed[3 * t + k] = 0;
+    if (trackWinding) wind[3 * t + k] = 0;
+  }
+  freeSlots_.push_back(t);
+}
+
+void Triangulation::setCorners(uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
+  uint32_t e = 3 * t;
+  tri[e] = a;
+  tri[e + 1] = b;
+  tri[e + 2] = c;
+  if (a != kGhost) vertexEdge[a] = e;
+  if (b != kGhost) vertexEdge[b] = e + 1;
+  if (c != kGhost) vertexEdge[c] = e + 2;
+}
+
+void Triangulation::init(uint32_t a, uint32_t b, uint32_t c) {
+  if (orient2d(point(a), point(b), point(c)) < 0) std::swap(b, c);
+  uint32_t t = newTriangle(), g0 = newTriangle(), g1 = newTriangle(), g2 = newTriangle();
+  setCorners(t, a, b, c);
+  setCorners(g0, b, a, kGhost);
+  setCorners(g1, c, b, kGhost);
+  setCorners(g2, a, c, kGhost);
+  link(3 * t, 3 * g0);
+  link(3 * t + 1, 3 * g1);
+  link(3 * t + 2, 3 * g2);
+  link(3 * g0 + 1, 3 * g2 + 2);
+  link(3 * g0 + 2, 3 * g1 + 1);
+  link(3 * g1 + 2, 3 * g2 + 1);
+}
+
+Location Triangulation::locate(const double* p, uint32_t hint) const {
+  uint32_t slots = triangleSlots();
+  uint32_t t = hint < slots && !isFree(hint) ? hint : kNone;
+  if (t == kNone) {
+    for (uint32_t s = 0; s < slots && t == kNone; ++s)
+      if (!isFree(s)) t = s;
+    if (t == kNone) return {};
+  }
+  if (isGhost(t)) {
+    // Step onto the real triangle across the ghost's hull edge.
+    for (uint32_t k = 0; k < 3; ++k) {
+      uint32_t e = 3 * t + k;
+      if (tri[e] != kGhost && tri[next(e)] != kGhost) {
+        t = opp[e] / 3;
+        break;
+      }
+    }
+  }
+  // A visibility walk always terminates in a Delaunay triangulation; in a constrained one it
+  // terminates with probability 1 because the exit edge is tried from a random start. The
+  // step cap only guards against bugs elsewhere: it falls back to a scan.
+  uint64_t maxSteps = 4ull * slots + 64;
+  for (uint64_t step = 0; step < maxSteps; ++step) {
+    if (isGhost(t)) return {Where::InTriangle, t, kNone, kNone};
+    rng_ ^= rng_ << 13;
+    rng_ ^= rng_ >> 17;
+    rng_ ^= rng_ << 5;
+    uint32_t start = rng_ % 3;
+    uint32_t zeros = 0, zeroEdge[2] = {kNone, kNone};
+    bool moved = false;
+    for (uint32_t i = 0; i < 3; ++i) {
+      uint32_t e = 3 * t + (start + i) % 3;
+      double o = orient2d(point(tri[e]), point(tri[next(e)]), p);
+      if (o < 0) {
+        t = opp[e] / 3;
+        moved = true;
+        break;
+      }
+      if (o == 0) zeroEdge[zeros++ & 1] = e;
+    }
+    if (moved) continue;
+    if (zeros == 0) return {Where::InTriangle, t, kNone, kNone};
+    if (zeros == 1) return {Where::OnEdge, t, zeroEdge[0], kNone};
+    uint32_t v = next(zeroEdge[0]) == zeroEdge[1] ? tri[zeroEdge[1]] : tri[zeroEdge[0]];
+    return {Where::OnVertex, t, kNone, v};
+  }
+  for (uint32_t s = 0; s < slots; ++s) {
+    if (isFree(s) || isGhost(s)) continue;
+    int zeros = 0;
+    uint32_t zeroEdge[2] = {kNone, kNone};
+    bool inside = true;
+    for (uint32_t k = 0; k < 3 && inside; ++k) {
+      uint32_t e = 3 * s + k;
+      double o = orient2d(point(tri[e]), point(tri[next(e)]), p);
+      if (o < 0) inside = false;
+      if (o == 0) zeroEdge[zeros++ & 1] = e;
+    }
+    if (!inside) continue;
+    if (zeros == 0) return {Where::InTriangle, s, kNone, kNone};
+    if (zeros == 1) return {Where::OnEdge, s, zeroEdge[0], kNone};
+    uint32_t v = next(zeroEdge[0]) == zeroEdge[1] ? tri[zeroEdge[1]] : tri[zeroEdge[0]];
+    return {Where::OnVertex, s, kNone, v};
+  }
+  // Outside the hull: any ghost whose hull edge the point sees strictly will do.
+  for (uint32_t s = 0; s < slots; ++s) {
+    if (isFree(s) || !isGhost(s)) continue;
+    for (uint32_t k = 0; k < 3; ++k) {
+      uint32_t e = 3 * s + k;
+      if (tri[e] != kGhost && tri[next(e)] != kGhost &&
+          orient2d(point(tri[e]), point(tri[next(e)]), p) > 0)
+        return {Where::InTriangle, s, kNone, kNone};
+    }
+  }
+  return {};
+}
+
+uint32_t Triangulation::splitTriangle(uint32_t t, uint32_t v) {
+  uint32_t e = 3 * t;
+  uint32_t a = tri[e], b = tri[e + 1], c = tri[e + 2];
+  uint32_t o0 = opp[e], o1 = opp[e + 1], o2 = opp[e + 2];
+  uint8_t f0 = fixed[e], f1 = fixed[e + 1], f2 = fixed[e + 2];
+  int32_t w0 = 0, w1 = 0, w2 = 0;
+  if (trackWinding) w0 = wind[e], w1 = wind[e + 1], w2 = wind[e + 2];
+  uint32_t t1 = newTriangle(), t2 = newTriangle();
+  setCorners(t, a, b, v);
+  setCorners(t1, b, c, v);
+  setCorners(t2, c, a, v);
+  link(3 * t, o0);
+  link(3 * t1, o1);
+  link(3 * t2, o2);
+  fixed[3 * t] = f0, fixed[3 * t1] = f1, fixed[3 * t2] = f2;
+  fixed[3 * t + 1] = fixed[3 * t + 2] = 0;
+  if (trackWinding) {
+    wind[3 * t] = w0, wind[3 * t1] = w1, wind[3 * t2] = w2;
+    wind[3 * t + 1] = wind[3 * t + 2] = 0;
+  }
+  link(3 * t + 1, 3 * t1 + 2);
+  link(3 * t + 2, 3 * t2 + 1);
+  link(3 * t1 + 1, 3 * t2 + 2);
+  scratch_.push_back(3 * t);
+  scratch_.push_back(3 * t1);
+  scratch_.push_back(3 * t2);
+  return v;
+}
+
+uint32_t Triangulation::splitEdge(uint32_t e, uint32_t v) {
+  uint32_t f = opp[e];
+  uint32_t t0 = e / 3, t1 = f / 3;
+  uint32_t e1 = next(e), e2 = prev(e), f1 = next(f), f2 = prev(f);
+  uint32_t a = tri[e], b = tri[e1], c = tri[e2], d = tri[f2];
+  uint32_t oe1 = opp[e1], oe2 = opp[e2], of1 = opp[f1], of2 = opp[f2];
+  uint8_t xe = fixed[e], xf = fixed[f], xe1 = fixed[e1], xe2 = fixed[e2], xf1 = fixed[f1],
+          xf2 = fixed[f2];
+  int32_t we = 0, wf = 0, we1 = 0, we2 = 0, wf1 = 0, wf2 = 0;
+  if (trackWinding)
+    we = wind[e], wf = wind[f], we1 = wind[e1], we2 = wind[e2], wf1 = wind[f1], wf2 = wind[f2];
+  uint32_t t2 = newTriangle(), t3 = newTriangle();
+  setCorners(t0, c, a, v);
+  setCorners(t1, b, c, v);
+  setCorners(t2, a, d, v);
+  setCorners(t3, d, b, v);
+  // Outer edges keep their twins and flags; the halves of the split edge inherit its flags.
+  uint32_t outer[4] = {3 * t0, 3 * t1, 3 * t2, 3 * t3};
+  uint32_t outerOpp[4] = {oe2, oe1, of1, of2};
+  uint8_t outerFixed[4] = {xe2, xe1, xf1, xf2};
+  int32_t outerWind[4] = {we2, we1, wf1, wf2};
+  for (int i = 0; i < 4; ++i) {
+    link(outer[i], outerOpp[i]);
+    fixed[outer[i]] = outerFixed[i];
+    fixed[outer[i] + 1] = fixed[outer[i] + 2] = 0;
+    if (trackWinding) {
+      wind[outer[i]] = outerWind[i];
+      wind[outer[i] + 1] = wind[outer[i] + 2] = 0;
+    }
+    scratch_.push_back(outer[i]);
+  }
+  link(3 * t0 + 1, 3 * t2 + 2);  // a->v | v->a
+  link(3 * t0 + 2, 3 * t1 + 1);  // v->c | c->v
+  link(3 * t1 + 2, 3 * t3 + 1);  // v->b | b->v
+  link(3 * t2 + 1, 3 * t3 + 2);  // d->v | v->d
+  fixed[3 * t0 + 1] = fixed[3 * t1 + 2] = xe;
+  fixed[3 * t2 + 2] = fixed[3 * t3 + 1] = xf;
+  if (trackWinding) {
+    wind[3 * t0 + 1] = wind[3 * t1 + 2] = we;
+    wind[3 * t2 + 2] = wind[3 * t3 + 1] = wf;
+  }
+  return v;
+}
+
+bool Triangulation::inCircumcircle(uint32_t t, uint32_t p) const {
+  if (p == kGhost) return false;
+  uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
+  // A ghost's "circumcircle" is the open half-plane outside its hull edge.
+  if (a == kGhost) return orient2d(point(b), point(c), point(p)) > 0;
+  if (b == kGhost) return orient2d(point(c), point(a), point(p)) > 0;
+  if (c == kGhost) return orient2d(point(a), point(b), point(p)) > 0;
+  return incircle(point(a), point(b), point(c), point(p)) > 0;
+}
+
+bool Triangulation::mustFlip(uint32_t e) const {
+  if (fixed[e]) return false;
+  return inCircumcircle(e / 3, tri[prev(opp[e])]);
+}
+
+void Triangulation::flip(uint32_t e) {
+  uint32_t f = opp[e];
+  uint32_t t0 = e / 3, t1 = f / 3;
+  uint32_t e1 = next(e), e2 = prev(e), f1 = next(f), f2 = prev(f);
+  uint32_t a = tri[e], b = tri[e1], c = tri[e2], d = tri[f2];
+  uint32_t oe1 = opp[e1], oe2 = opp[e2], of1 = opp[f1], of2 = opp[f2];
+  uint8_t xe1 = fixed[e1], xe2 = fixed[e2], xf1 = fixed[f1], xf2 = fixed[f2];
+  int32_t we1 = 0, we2 = 0, wf1 = 0, wf2 = 0;
+  if (trackWinding) we1 = wind[e1], we2 = wind[e2], wf1 = wind[f1], wf2 = wind[f2];
+  // Quadrilateral a, d, b, c (counter-clockwise) gets the diagonal c-d.
+  setCorners(t0, c, a, d);
+  setCorners(t1, d, b, c);
+  link(3 * t0, oe2);
+  link(3 * t0 + 1, of1);
+  link(3 * t1, of2);
+  link(3 * t1 + 1, oe1);
+  link(3 * t0 + 2, 3 * t1 + 2);
+  fixed[3 * t0] = xe2, fixed[3 * t0 + 1] = xf1, fixed[3 * t0 + 2] = 0;
+  fixed[3 * t1] = xf2, fixed[3 * t1 + 1] = xe1, fixed[3 * t1 + 2] = 0;
+  if (trackWinding) {
+    wind[3 * t0] = we2, wind[3 * t0 + 1] = wf1, wind[3 * t0 + 2] = 0;
+    wind[3 * t1] = wf2, wind[3 * t1 + 1] = we1, wind[3 * t1 + 2] = 0;
+  }
+}
+
+void Triangulation::legalizeFrom(uint32_t v, std::vector<uint32_t>& stack) {
+  (void)v;
+  // Every half-edge on the stack lies opposite the new vertex in its triangle; after a flip
+  // the two edges opposite it in the new triangles are the only ones that can be illegal.
+  while (!stack.empty()) {
+    uint32_t e = stack.back();
+    stack.pop_back();
+    if (!mustFlip(e)) continue;
+    uint32_t t0 = e / 3, t1 = opp[e] / 3;
+    flip(e);
+    stack.push_back(3 * t0 + 1);
+    stack.push_back(3 * t1);
+  }
+}
+
+void Triangulation::legalize(std::vector<uint32_t>& stack) {
+  while (!stack.empty()) {
+    uint32_t e = stack.back();
+    stack.pop_back();
+    if (isFree(e / 3) || !mustFlip(e)) continue;
+    uint32_t t0 = e / 3, t1 = opp[e] / 3;
+    flip(e);
+    stack.push_back(3 * t0);
+    stack.push_back(3 * t0 + 1);
+    stack.push_back(3 * t1);
+    stack.push_back(3 * t1 + 1);
+  }
+}
+
+uint32_t Triangulation::insertAt(uint32_t v, const Location& loc) {
+  scratch_.clear();
+  switch (loc.where) {
+    case Where::OnVertex:
+      return loc.vertex;
+    case Where::InTriangle:
+      splitTriangle(loc.tri, v);
+      break;
+    case Where::OnEdge:
+      splitEdge(loc.edge, v);
+      break;
+    case Where::Failed:
+      return kNone;
+  }
+  legalizeFrom(v, scratch_);
+  return v;
+}
+
+uint32_t Triangulation::insert(uint32_t v, uint32_t hint) {
+  return insertAt(v, locate(point(v), hint));
+}
+
+uint32_t Triangulation::findEdge(uint32_t a, uint32_t b) const {
+  uint32_t e0 = vertexEdge[a];
+  if (e0 == kNone) return kNone;
+  uint32_t e = e0;
+  do {
+    if (tri[next(e)] == b) return e;
+    e = opp[prev(e)];
+  } while (e != e0);
+  return kNone;
+}
+
+void Triangulation::fixEdge(uint32_t e, int dir) {
+  fixed[e] = fixed[opp[e]] = 1;
+  if (trackWinding) {
+    wind[e] += dir;
+    wind[opp[e]] -= dir;
+  }
+}
+
+void Triangulation::unfixEdge(uint32_t e) {
+  fixed[e] = fixed[opp[e]] = 0;
+  if (trackWinding) wind[e] = wind[opp[e]] = 0;
+}
+
+bool Triangulation::removeVertex(uint32_t v) {
+  uint32_t e0 = vertexEdge[v];
+  if (e0 == kNone) return false;
+  std::vector<uint32_t> ring;  // link vertices in counter-clockwise order around v
+  uint32_t e = e0;
+  do {
+    if (isGhost(e / 3) || fixed[e]) return false;
+    ring.push_back(tri[next(e)]);
+    e = opp[prev(e)];
+  } while (e != e0);
+
+  std::vector<uint32_t> stack;
+  while (ring.size() > 3) {
+    // Flip away the spoke v-w of an ear x, w, y of the link (x before w, y after it). Prefer an
+    // ear whose circumcircle holds no other link vertex: it is a triangle of the final
+    // Delaunay triangulation, so later flips have little to repair.
+    size_t n = ring.size(), best = n;
+    bool bestDelaunay = false;
+    for (size_t i = 0; i < n && !bestDelaunay; ++i) {
+      uint32_t x = ring[(i + n - 1) % n], w = ring[i], y = ring[(i + 1) % n];
+      if (orient2d(point(y), point(v), point(x)) <= 0 ||
+          orient2d(point(x), point(w), point(y)) <= 0)
+        continue;
+      bool delaunay = n <= 32;
+      for (size_t j = 0; j < n && delaunay; ++j) {
+        uint32_t q = ring[j];
+        if (q != x && q != w && q != y &&
+            incircle(point(x), point(w), point(y), point(q)) > 0)
+          delaunay = false;
+      }
+      if (best == n || delaunay) best = i, bestDelaunay = delaunay;
+    }
+    if (best == n) return false;  // only on degenerate (collinear) links; mesh stays valid
+    uint32_t spoke = findEdge(v, ring[best]);
+    uint32_t t1 = opp[spoke] / 3;
+    flip(spoke);
+    // The ear triangle (now t1) leaves v's star; its edges may need flips later.
+    stack.push_back(3 * t1);
+    stack.push_back(3 * t1 + 1);
+    stack.push_back(3 * t1 + 2);
+    ring.erase(ring.begin() + long(best));
+  }
+  // Degree 3: v sits inside triangle ring[0..2]; merge its three triangles into that one.
+  uint32_t ea = findEdge(v, ring[0]);
+  uint32_t eb = opp[prev(ea)], ec = opp[prev(eb)];
+  uint32_t outer[3] = {next(ea), next(eb), next(ec)};
+  uint32_t outerOpp[3], t = ea / 3;
+  uint8_t outerFixed[3];
+  int32_t outerWind[3] = {0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    outerOpp[i] = opp[outer[i]];
+    outerFixed[i] = fixed[outer[i]];
+    if (trackWinding) outerWind[i] = wind[outer[i]];
+  }
+  freeTriangle(eb / 3);
+  freeTriangle(ec / 3);
+  setCorners(t, ring[0], ring[1], ring[2]);
+  for (int i = 0; i < 3; ++i) {
+    link(3 * t + i, outerOpp[i]);
+    fixed[3 * t + i] = outerFixed[i];
+    if (trackWinding) wind[3 * t + i] = outerWind[i];
+    stack.push_back(3 * t + i);
+  }
+  vertexEdge[v] = kNone;
+  legalize(stack);
+  return true;
+}
+
+}  // namespace acutemesh::detail

@@ -1,0 +1,245 @@
+// acutemesh: the command-line tool. Reads a PSLG, meshes it, writes the mesh in the formats
+// asked for. Exit status: 0 ok, 1 target not met (best mesh written), 2 bad input or usage.
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "acutemesh/acutemesh.h"
+#include "acutemesh/io.h"
+
+namespace {
+
+using namespace acutemesh;
+
+const char* kUsage = R"(usage: acutemesh [options] INPUT
+
+Triangulates a point set or planar straight-line graph.
+INPUT: .poly | .node (Triangle's formats) | .json (acutemesh PSLG or rings, CG:SHOP 2025 instance)
+
+options:
+  -o, --output BASE    write BASE.node, BASE.ele, ... (default: INPUT without extension + ".1")
+  --format LIST        comma list of node,ele,poly,json,off,obj,svg (default: node,ele)
+  --mode MODE          delaunay: Delaunay triangulation of the vertices (segments ignored)
+                       cdt: constrained Delaunay triangulation of the domain (default)
+  --fill RULE          which regions form the domain:
+                       triangle: Triangle's rule: the convex hull minus what is reachable from
+                                 outside or from a hole point without crossing a segment
+                                 (default for .poly, .node and CG:SHOP input)
+                       evenodd:  regions inside an odd number of rings (default for JSON rings)
+                       nonzero:  regions with non-zero winding number (segments are directed)
+  --convex-hull        keep every triangle of the convex hull (hole points still apply)
+  --time-limit S       give up after S seconds (exit status 1)
+  --stats              print one JSON object of figures on stdout
+  --no-output          compute, write nothing (for timing)
+  -h, --help           this text
+  --version            print the version
+
+exit status: 0 ok; 1 target not met; 2 bad input or usage (one-line message on stderr)
+)";
+
+int usageError(const std::string& message) {
+  std::fprintf(stderr, "acutemesh: %s\n(try 'acutemesh --help')\n", message.c_str());
+  return 2;
+}
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (start <= s.size()) {
+    size_t comma = s.find(',', start);
+    if (comma == std::string::npos) comma = s.size();
+    if (comma > start) out.push_back(s.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string jsonString(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+const char* modeName(Mode m) {
+  switch (m) {
+    case Mode::Delaunay: return "delaunay";
+    case Mode::Cdt: return "cdt";
+    case Mode::Quality: return "quality";
+    case Mode::NonObtuse: return "nonobtuse";
+    case Mode::Acute: return "acute";
+  }
+  return "?";
+}
+
+const char* fillName(FillRule f) {
+  switch (f) {
+    case FillRule::Triangle: return "triangle";
+    case FillRule::EvenOdd: return "evenodd";
+    case FillRule::NonZero: return "nonzero";
+  }
+  return "?";
+}
+
+const char* statusName(Status s) {
+  switch (s) {
+    case Status::Ok: return "ok";
+    case Status::TargetNotMet: return "target-not-met";
+    case Status::BadInput: return "bad-input";
+    case Status::Cancelled: return "cancelled";
+  }
+  return "?";
+}
+
+void printStats(const std::string& input, const Options& opt, const Result& r,
+                const std::vector<PhaseTime>& phases, const std::vector<std::string>& warnings) {
+  const Stats& s = r.stats;
+  std::printf("{\"input\": %s, \"mode\": \"%s\", \"fill\": \"%s\", \"status\": \"%s\",\n",
+              jsonString(input).c_str(), modeName(opt.mode), fillName(opt.fill),
+              statusName(r.status));
+  std::printf(" \"inputVertices\": %u, \"inputSegments\": %u, \"inputHoles\": %u,\n",
+              s.inputVertices, s.inputSegments, s.inputHoles);
+  std::printf(" \"vertices\": %u, \"triangles\": %u, \"segments\": %u, \"steiner\": %u, "
+              "\"duplicates\": %u,\n",
+              s.vertices, s.triangles, s.segments, s.steiner, s.duplicates);
+  std::printf(" \"minAngle\": %.6f, \"maxAngle\": %.6f, \"nonAcute\": %u, \"obtuse\": %u,\n",
+              s.minAngle, s.maxAngle, s.nonAcute, s.obtuse);
+  std::printf(" \"seconds\": {");
+  double total = 0;
+  for (size_t i = 0; i < phases.size(); ++i) {
+    std::printf("%s\"%s\": %.6f", i ? ", " : "", phases[i].phase.c_str(), phases[i].seconds);
+    total += phases[i].seconds;
+  }
+  std::printf("%s\"total\": %.6f},\n", phases.empty() ? "" : ", ", total);
+  std::printf(" \"warnings\": [");
+  for (size_t i = 0; i < warnings.size(); ++i)
+    std::printf("%s%s", i ? ", " : "", jsonString(warnings[i]).c_str());
+  std::printf("]}\n");
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string input, output;
+  std::vector<std::string> formats{"node", "ele"};
+  Options opt;
+  bool fillGiven = false, wantStats = false, writeOutput = true;
+
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc) return false;
+      out = argv[++i];
+      return true;
+    };
+    std::string v;
+    if (a == "-h" || a == "--help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (a == "--version") {
+      std::printf("acutemesh %s\n", version());
+      return 0;
+    } else if (a == "-o" || a == "--output") {
+      if (!value(output)) return usageError(a + " needs a file name base");
+    } else if (a == "--format") {
+      if (!value(v)) return usageError("--format needs a list, e.g. node,ele,svg");
+      formats = splitList(v);
+      for (const std::string& f : formats)
+        if (f != "node" && f != "ele" && f != "poly" && f != "json" && f != "off" &&
+            f != "obj" && f != "svg")
+          return usageError("unknown format '" + f + "' (node, ele, poly, json, off, obj, svg)");
+    } else if (a == "--mode") {
+      if (!value(v)) return usageError("--mode needs delaunay or cdt");
+      if (v == "delaunay") opt.mode = Mode::Delaunay;
+      else if (v == "cdt") opt.mode = Mode::Cdt;
+      else if (v == "quality" || v == "nonobtuse" || v == "acute")
+        return usageError("mode '" + v + "' is not available in this version (delaunay, cdt)");
+      else return usageError("unknown mode '" + v + "' (delaunay, cdt)");
+    } else if (a == "--fill") {
+      if (!value(v)) return usageError("--fill needs triangle, evenodd or nonzero");
+      if (v == "triangle") opt.fill = FillRule::Triangle;
+      else if (v == "evenodd") opt.fill = FillRule::EvenOdd;
+      else if (v == "nonzero") opt.fill = FillRule::NonZero;
+      else return usageError("unknown fill rule '" + v + "' (triangle, evenodd, nonzero)");
+      fillGiven = true;
+    } else if (a == "--convex-hull") {
+      opt.convexHull = true;
+    } else if (a == "--time-limit") {
+      char* end = nullptr;
+      if (!value(v)) return usageError("--time-limit needs seconds");
+      opt.timeLimit = std::strtod(v.c_str(), &end);
+      if (*end || !(opt.timeLimit > 0)) return usageError("--time-limit needs a positive number");
+    } else if (a == "--stats") {
+      wantStats = true;
+    } else if (a == "--no-output") {
+      writeOutput = false;
+    } else if (a.size() > 1 && a[0] == '-') {
+      return usageError("unknown option '" + a + "'");
+    } else if (input.empty()) {
+      input = a;
+    } else {
+      return usageError("more than one input file ('" + input + "', '" + a + "')");
+    }
+  }
+  if (input.empty()) return usageError("no input file");
+
+  std::vector<PhaseTime> phases;
+  auto t0 = std::chrono::steady_clock::now();
+  Input in;
+  ParseResult parsed = readInputFile(input, in);
+  if (!parsed.ok) {
+    std::fprintf(stderr, "acutemesh: error: %s\n", parsed.message.c_str());
+    return 2;
+  }
+  phases.push_back({"read", secondsSince(t0)});
+  if (!fillGiven && in.hasRings) opt.fill = FillRule::EvenOdd;
+
+  Result r = mesh(in.pslg, opt);
+  for (const PhaseTime& p : r.stats.phases) phases.push_back(p);
+  std::vector<std::string> warnings = in.warnings;
+  warnings.insert(warnings.end(), r.stats.warnings.begin(), r.stats.warnings.end());
+  for (const std::string& w : warnings) std::fprintf(stderr, "acutemesh: warning: %s\n", w.c_str());
+  if (r.status == Status::BadInput) {
+    std::fprintf(stderr, "acutemesh: error: %s: %s\n", input.c_str(), r.message.c_str());
+    return 2;
+  }
+
+  if (writeOutput) {
+    if (output.empty()) {
+      size_t slash = input.find_last_of('/'), dot = input.find_last_of('.');
+      output = (dot != std::string::npos && (slash == std::string::npos || dot > slash))
+                   ? input.substr(0, dot)
+                   : input;
+      output += ".1";
+    }
+    auto tw = std::chrono::steady_clock::now();
+    ParseResult written = writeMeshFiles(r.mesh, output, formats);
+    if (!written.ok) {
+      std::fprintf(stderr, "acutemesh: error: %s\n", written.message.c_str());
+      return 2;
+    }
+    phases.push_back({"write", secondsSince(tw)});
+  }
+  if (wantStats) printStats(input, opt, r, phases, warnings);
+  if (r.status != Status::Ok) {
+    std::fprintf(stderr, "acutemesh: %s\n", r.message.c_str());
+    return 1;
+  }
+  return 0;
+}

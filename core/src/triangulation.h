@@ -1,0 +1,118 @@
+// The triangulation store: flat half-edge arrays over the whole plane.
+//
+// Triangle t has corners tri[3t], tri[3t+1], tri[3t+2] in counter-clockwise order.
+// Half-edge e = 3t+k runs from tri[e] to tri[next(e)]; opp[e] is its twin in the
+// neighbouring triangle. The convex hull is closed off by "ghost" triangles that share the
+// vertex kGhost (a point at infinity), as in CGAL and Shewchuk's work: every half-edge then
+// has a twin, point location and insertion outside the hull need no special cases, and the
+// hull stays exact. Each hull edge (a->b, outside on its left) carries one ghost (a, b, kGhost).
+//
+// All topology decisions use the exact predicates; no coordinate is ever compared with a
+// tolerance.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace acutemesh::detail {
+
+constexpr uint32_t kNone = 0xFFFFFFFFu;
+constexpr uint32_t kGhost = 0xFFFFFFFEu;
+
+inline uint32_t next(uint32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
+inline uint32_t prev(uint32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
+
+enum class Where { InTriangle, OnEdge, OnVertex, Failed };
+
+struct Location {
+  Where where = Where::Failed;
+  uint32_t tri = kNone;    // InTriangle: the triangle
+  uint32_t edge = kNone;   // OnEdge: a half-edge the point lies on (strictly inside it)
+  uint32_t vertex = kNone; // OnVertex: the vertex with exactly these coordinates
+};
+
+class Triangulation {
+ public:
+  // Vertex coordinates (x, y interleaved). Vertices are only ever appended.
+  std::vector<double> pts;
+  std::vector<uint32_t> tri;    // 3 per triangle; tri[3t] == kNone marks a free slot
+  std::vector<uint32_t> opp;    // twin half-edge, 3 per triangle
+  std::vector<uint8_t> fixed;   // per half-edge: 1 if the edge lies on an input segment
+  // Net winding contribution of input segments along each half-edge (segments a->b minus
+  // segments b->a), kept only when trackWinding is set; twins hold opposite values.
+  std::vector<int32_t> wind;
+  bool trackWinding = false;
+  std::vector<uint32_t> vertexEdge;  // per vertex: a half-edge leaving it, kNone if unused
+
+  uint32_t vertexCount() const { return uint32_t(pts.size() / 2); }
+  uint32_t triangleSlots() const { return uint32_t(tri.size() / 3); }
+  const double* point(uint32_t v) const { return &pts[2 * size_t(v)]; }
+  bool isGhost(uint32_t t) const {
+    return tri[3 * t] == kGhost || tri[3 * t + 1] == kGhost || tri[3 * t + 2] == kGhost;
+  }
+  bool isFree(uint32_t t) const { return tri[3 * t] == kNone; }
+  bool isFixed(uint32_t e) const { return fixed[e] != 0; }
+
+  // Appends a vertex (not yet connected) and returns its index.
+  uint32_t addVertex(double x, double y);
+
+  // Builds the first real triangle from three non-collinear vertices (plus its 3 ghosts).
+  void init(uint32_t a, uint32_t b, uint32_t c);
+
+  // Exact point location by a stochastic visibility walk from the triangle `hint`.
+  Location locate(const double* p, uint32_t hint) const;
+
+  // Inserts vertex v (already in pts) at its location and restores the Delaunay property
+  // around it with Lawson flips that never cross fixed edges. Returns v, or the vertex
+  // already at those coordinates (v then stays unconnected).
+  uint32_t insert(uint32_t v, uint32_t hint);
+  uint32_t insertAt(uint32_t v, const Location& loc);
+
+  // Flips the edge of half-edge e (which must not be fixed, and whose quadrilateral must
+  // be strictly convex). Afterwards the new diagonal is half-edge 3*t0+2 / 3*t1+2.
+  void flip(uint32_t e);
+
+  // True if the apex of opp[e]'s triangle lies strictly inside the circumcircle of e's
+  // triangle (ghost triangles: strictly outside their hull edge).
+  bool mustFlip(uint32_t e) const;
+
+  // Lawson flips until every non-fixed edge reachable from the stack is locally Delaunay.
+  void legalize(std::vector<uint32_t>& stack);
+
+  // Removes an interior vertex whose star has no ghost triangle and no fixed edge:
+  // flips its degree down to 3, merges the last three triangles and restores Delaunay.
+  // Returns false (and changes nothing) if the vertex is not removable.
+  bool removeVertex(uint32_t v);
+
+  // The half-edge leaving a with its other end at b, or kNone.
+  uint32_t findEdge(uint32_t a, uint32_t b) const;
+
+  // Marks the edge of half-edge e (both directions) as lying on an input segment; with
+  // winding tracking, adds `dir` (+1 along e, -1 against) to its net winding.
+  void fixEdge(uint32_t e, int dir);
+  void unfixEdge(uint32_t e);
+
+  uint32_t liveTriangleCount() const { return triangleSlots() - uint32_t(freeSlots_.size()); }
+  std::vector<uint32_t>& scratch() { return scratch_; }
+
+ private:
+  uint32_t newTriangle();
+  void freeTriangle(uint32_t t);
+  void setCorners(uint32_t t, uint32_t a, uint32_t b, uint32_t c);
+  void link(uint32_t e, uint32_t f) {
+    opp[e] = f;
+    opp[f] = e;
+  }
+  uint32_t splitTriangle(uint32_t t, uint32_t v);
+  uint32_t splitEdge(uint32_t e, uint32_t v);
+  void legalizeFrom(uint32_t v, std::vector<uint32_t>& stack);
+  // Inside-test of point p against triangle t, honouring ghosts.
+  bool inCircumcircle(uint32_t t, uint32_t p) const;
+
+  std::vector<uint32_t> freeSlots_;
+  std::vector<uint32_t> scratch_;
+  mutable uint32_t rng_ = 2463534242u;
+};
+
+}  // namespace acutemesh::detail

@@ -1,0 +1,198 @@
+// The half-edge store and the Delaunay builder, checked directly: twin consistency,
+// orientation, the empty-circle property (brute force, exact), vertex removal.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+#include "acutemesh/predicates.h"
+#include "build.h"
+#include "triangulation.h"
+
+using namespace acutemesh;
+using namespace acutemesh::detail;
+
+namespace {
+
+// Every structural invariant of the store; returns the first violation found.
+std::string checkStore(const Triangulation& T) {
+  uint32_t ghosts = 0, reals = 0;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
+    if (T.isFree(t)) continue;
+    int ghostCorners = 0;
+    for (uint32_t k = 0; k < 3; ++k) {
+      uint32_t e = 3 * t + k, f = T.opp[e];
+      if (f == kNone || T.isFree(f / 3)) return "half-edge " + std::to_string(e) + " has no twin";
+      if (T.opp[f] != e) return "twins of " + std::to_string(e) + " disagree";
+      if (T.tri[f] != T.tri[next(e)] || T.tri[next(f)] != T.tri[e])
+        return "twin of " + std::to_string(e) + " has other endpoints";
+      if (T.fixed[e] != T.fixed[f]) return "fixed flag differs across " + std::to_string(e);
+      if (T.trackWinding && T.wind[e] != -T.wind[f]) return "winding not antisymmetric";
+      ghostCorners += T.tri[e] == kGhost;
+      if (T.tri[e] != kGhost && T.tri[e] >= T.vertexCount()) return "bad vertex index";
+    }
+    if (ghostCorners > 1) return "triangle " + std::to_string(t) + " has two ghost corners";
+    if (ghostCorners == 1) {
+      ++ghosts;
+      continue;
+    }
+    ++reals;
+    if (orient2d(T.point(T.tri[3 * t]), T.point(T.tri[3 * t + 1]), T.point(T.tri[3 * t + 2])) <= 0)
+      return "triangle " + std::to_string(t) + " is not counter-clockwise";
+  }
+  for (uint32_t v = 0; v < T.vertexCount(); ++v) {
+    uint32_t e = T.vertexEdge[v];
+    if (e != kNone && (T.isFree(e / 3) || T.tri[e] != v))
+      return "vertexEdge of " + std::to_string(v) + " is stale";
+  }
+  (void)reals;
+  return {};
+}
+
+// Brute force: no vertex strictly inside any real triangle's circumcircle (edges not fixed).
+size_t delaunayViolations(const Triangulation& T) {
+  size_t bad = 0;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
+    if (T.isFree(t) || T.isGhost(t)) continue;
+    const double *a = T.point(T.tri[3 * t]), *b = T.point(T.tri[3 * t + 1]),
+                 *c = T.point(T.tri[3 * t + 2]);
+    for (uint32_t v = 0; v < T.vertexCount(); ++v)
+      if (T.vertexEdge[v] != kNone && incircle(a, b, c, T.point(v)) > 0) ++bad;
+  }
+  return bad;
+}
+
+size_t realTriangles(const Triangulation& T) {
+  size_t n = 0;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) n += !T.isFree(t) && !T.isGhost(t);
+  return n;
+}
+
+Triangulation build(const std::vector<double>& pts, std::vector<uint32_t>* canonical = nullptr,
+                    StepResult* result = nullptr) {
+  Triangulation T;
+  T.pts = pts;
+  T.vertexEdge.assign(pts.size() / 2, kNone);
+  std::vector<uint32_t> local;
+  Options options;
+  Budget budget(options);
+  StepResult r = buildDelaunay(T, uint32_t(pts.size() / 2), canonical ? *canonical : local, budget);
+  if (result) *result = r;
+  return T;
+}
+
+std::vector<double> randomPoints(size_t n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> pts(2 * n);
+  for (double& x : pts) x = u(rng);
+  return pts;
+}
+
+}  // namespace
+
+TEST(Triangulation, RandomPointsAreDelaunay) {
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    Triangulation T = build(randomPoints(400, seed));
+    EXPECT_EQ(checkStore(T), "");
+    EXPECT_EQ(delaunayViolations(T), 0u);
+  }
+}
+
+TEST(Triangulation, CocircularGridIsValidAndDelaunay) {
+  std::vector<double> pts;
+  for (int i = 0; i < 25; ++i)
+    for (int j = 0; j < 25; ++j) pts.push_back(i), pts.push_back(j);
+  Triangulation T = build(pts);
+  EXPECT_EQ(checkStore(T), "");
+  EXPECT_EQ(delaunayViolations(T), 0u);
+  // A grid of n x n points has 2 (n-1)^2 triangles whatever the diagonals.
+  EXPECT_EQ(realTriangles(T), 2u * 24 * 24);
+}
+
+TEST(Triangulation, CollinearRunsAndHullGrowth) {
+  // Points inserted along a line first, then on both sides: exercises hull edges that are
+  // collinear and insertion on ghost edges.
+  std::vector<double> pts;
+  for (int i = 0; i < 50; ++i) pts.push_back(i * 0.5), pts.push_back(0);
+  for (int i = 0; i < 50; ++i) pts.push_back(i * 0.37), pts.push_back(i % 2 ? 3.0 : -2.0);
+  Triangulation T = build(pts);
+  EXPECT_EQ(checkStore(T), "");
+  EXPECT_EQ(delaunayViolations(T), 0u);
+}
+
+TEST(Triangulation, DuplicatesMapToTheFirstEqualVertex) {
+  std::vector<double> pts = {0, 0, 1, 0, 0, 1, 1, 0, 0.25, 0.25, 0, 0, 0.25, 0.25};
+  std::vector<uint32_t> canonical;
+  Triangulation T = build(pts, &canonical);
+  EXPECT_EQ(checkStore(T), "");
+  ASSERT_EQ(canonical.size(), 7u);
+  // Whichever of two equal vertices was inserted first represents both.
+  EXPECT_EQ(canonical[1], canonical[3]);
+  EXPECT_EQ(canonical[0], canonical[5]);
+  EXPECT_EQ(canonical[4], canonical[6]);
+  EXPECT_EQ(realTriangles(T), 3u);
+  size_t connected = 0;
+  for (uint32_t v = 0; v < 7; ++v) connected += T.vertexEdge[v] != kNone;
+  EXPECT_EQ(connected, 4u);
+}
+
+TEST(Triangulation, DegenerateInputsAreErrors) {
+  StepResult r;
+  build({0, 0, 1, 1, 2, 2, 3, 3}, nullptr, &r);
+  EXPECT_EQ(r.status, Status::BadInput);
+  EXPECT_NE(r.message.find("collinear"), std::string::npos) << r.message;
+  build({1, 1, 1, 1, 1, 1}, nullptr, &r);
+  EXPECT_EQ(r.status, Status::BadInput);
+  EXPECT_NE(r.message.find("coincide"), std::string::npos) << r.message;
+  build({1, 1, 2, 2}, nullptr, &r);
+  EXPECT_EQ(r.status, Status::BadInput);
+}
+
+TEST(Triangulation, LocateReportsVertexEdgeAndTriangle) {
+  Triangulation T = build({0, 0, 4, 0, 0, 4, 4, 4});
+  double onVertex[2] = {4, 0}, onEdge[2] = {2, 0}, inside[2] = {1, 2}, outside[2] = {9, 1};
+  Location l = T.locate(onVertex, 0);
+  EXPECT_EQ(l.where, Where::OnVertex);
+  EXPECT_EQ(l.vertex, 1u);
+  l = T.locate(onEdge, 0);
+  ASSERT_EQ(l.where, Where::OnEdge);
+  EXPECT_EQ(orient2d(T.point(T.tri[l.edge]), T.point(T.tri[next(l.edge)]), onEdge), 0);
+  EXPECT_EQ(T.locate(inside, 0).where, Where::InTriangle);
+  l = T.locate(outside, 0);
+  ASSERT_EQ(l.where, Where::InTriangle);
+  EXPECT_TRUE(T.isGhost(l.tri));
+}
+
+TEST(Triangulation, RemoveVertexKeepsDelaunay) {
+  std::vector<double> pts = randomPoints(300, 7);
+  Triangulation T = build(pts);
+  std::mt19937 rng(3);
+  size_t removed = 0;
+  for (int attempt = 0; attempt < 200; ++attempt) {
+    uint32_t v = rng() % 300;
+    if (!T.removeVertex(v)) continue;  // hull vertices are not removable
+    ++removed;
+    ASSERT_EQ(checkStore(T), "") << "after removing " << v;
+    ASSERT_EQ(T.vertexEdge[v], kNone);
+  }
+  EXPECT_GT(removed, 100u);
+  EXPECT_EQ(delaunayViolations(T), 0u);
+  // Every removed vertex can go back in.
+  for (uint32_t v = 0; v < 300; ++v)
+    if (T.vertexEdge[v] == kNone) EXPECT_EQ(T.insert(v, 0), v);
+  EXPECT_EQ(checkStore(T), "");
+  EXPECT_EQ(delaunayViolations(T), 0u);
+}
+
+TEST(Triangulation, RemoveVertexRefusesFixedAndHullVertices) {
+  Triangulation T = build({0, 0, 4, 0, 4, 4, 0, 4, 2, 2, 1, 2});
+  EXPECT_FALSE(T.removeVertex(0));  // on the hull
+  uint32_t e = T.findEdge(4, 5);
+  ASSERT_NE(e, kNone);
+  T.fixEdge(e, 1);
+  EXPECT_FALSE(T.removeVertex(4));
+  T.unfixEdge(e);
+  EXPECT_TRUE(T.removeVertex(4));
+  EXPECT_EQ(checkStore(T), "");
+}
