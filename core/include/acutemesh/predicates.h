@@ -20,4 +20,26 @@ double dot2d(const double* a, const double* b, const double* c);
 
 inline int sign(double v) { return (v > 0) - (v < 0); }
 
+// Exact sign helpers: -1, 0 or +1, with exactly the meaning of the predicate they wrap.
+// All predicates are exact unless an intermediate result overflows or underflows; that
+// cannot happen while every coordinate is 0 or has magnitude in roughly [1e-50, 1e50].
+
+// +1 if a, b, c are counter-clockwise, -1 if clockwise, 0 if exactly collinear.
+inline int orientSign(const double* a, const double* b, const double* c) {
+  return sign(orient2d(a, b, c));
+}
+
+// +1 if d is strictly inside the circle through counter-clockwise a, b, c, -1 if strictly
+// outside, 0 if the four points are exactly cocircular (or a, b, c are collinear and d is
+// on their line). Swapping any two arguments negates the result.
+inline int incircleSign(const double* a, const double* b, const double* c, const double* d) {
+  return sign(incircle(a, b, c, d));
+}
+
+// Sign of (b - a) . (c - a): +1 if the angle at a is acute, 0 if exactly right (or b == a
+// or c == a), -1 if obtuse.
+inline int dotSign(const double* a, const double* b, const double* c) {
+  return sign(dot2d(a, b, c));
+}
+
 }  // namespace acutemesh
