@@ -72,6 +72,7 @@ for c in "${CASES[@]}"; do
 done
 
 # --- measuring --------------------------------------------------------------------------------
+load_start=$(cut -d' ' -f1-3 /proc/loadavg)
 # key=value from a result line
 kv() { tr ' ' '\n' <<<"$2" | sed -n "s/^$1=//p" | head -n1; }
 
@@ -135,6 +136,7 @@ for c in "${CASES[@]}"; do
 done
 
 # --- report -----------------------------------------------------------------------------------
+load_end=$(cut -d' ' -f1-3 /proc/loadavg)
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n1)
 ram=$(awk '/^MemTotal/ { printf "%.1f GiB", $2 / 1048576 }' /proc/meminfo)
 gxx=$(g++ --version | head -n1)
@@ -150,6 +152,7 @@ out="bench/results/core-$today.md"
   echo
   echo "Machine: $cpu, $(nproc) cores, $ram RAM; $gxx; CGAL $cgal_v (Debian libcgal-dev $cgal_pkg, header-only);"
   echo "$(uname -sr); acutemesh $commit. Both built with CMake Release (-O3 -DNDEBUG)."
+  echo "Load average before / after the runs: $load_start / $load_end (other work on a 2-core machine skews timings)."
   echo
   echo "| case | ours whole-process s | CGAL whole-process s | ours library s | CGAL library s | our peak RSS MB | our bytes/triangle | CGAL peak RSS MB |"
   echo "|---|---:|---:|---:|---:|---:|---:|---:|"
