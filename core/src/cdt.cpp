@@ -5,6 +5,7 @@
 // it there, an already fixed edge crossed by it yields a new vertex at the crossing (both
 // segments then pass through that vertex), and otherwise the crossed edges are flipped away
 // (Sloan's method) and Delaunay is restored with Lawson flips around the new fixed edge.
+#include <algorithm>
 #include <deque>
 
 #include "acutemesh/predicates.h"
@@ -15,26 +16,34 @@ namespace {
 
 struct Piece {
   uint32_t from, to;
-  int dir;  // winding contribution along from->to
+  int dir;       // winding contribution along from->to
+  uint32_t seg;  // the input segment this piece lies on
 };
 
 class SegmentInserter {
  public:
-  SegmentInserter(Triangulation& T, const Budget& budget) : T_(T), budget_(budget) {}
+  SegmentInserter(Triangulation& T, const Pslg& input, const std::vector<uint32_t>& canonical,
+                  const Budget& budget)
+      : T_(T), input_(input), canonical_(canonical), budget_(budget) {}
 
-  StepResult insert(uint32_t a, uint32_t b, uint64_t crossingBudget);
+  StepResult insert(uint32_t seg, uint64_t crossingBudget);
   uint64_t crossings() const { return crossings_; }
 
  private:
   const double* P(uint32_t v) const { return T_.point(v); }
+  const double* segmentEnd(uint32_t seg, int k) const {
+    return P(canonical_[input_.segments[2 * size_t(seg) + k]]);
+  }
   // Returns the half-edge leaving u toward the segment's interior: an edge u->w with w on the
   // segment (*collinear set), or the edge w->x of the triangle (u, w, x) that the segment
   // crosses first.
   uint32_t firstStep(uint32_t u, uint32_t v, bool* collinear) const;
   bool splitAtCrossing(const Piece& piece, uint32_t crossed);
-  void flipAway(uint32_t u, uint32_t end, std::vector<uint32_t>& crossedEdges);
+  bool flipAway(uint32_t u, uint32_t end, const Piece& piece, std::vector<uint32_t>& crossedEdges);
 
   Triangulation& T_;
+  const Pslg& input_;
+  const std::vector<uint32_t>& canonical_;
   const Budget& budget_;
   std::vector<Piece> todo_;
   uint64_t crossings_ = 0;
@@ -68,11 +77,27 @@ uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) con
 // both the piece and the fixed edge through it. Returns false if no vertex could be placed.
 bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
   uint32_t w = T_.tri[crossed], x = T_.tri[next(crossed)];
-  const double *u = P(piece.from), *v = P(piece.to), *pw = P(w), *px = P(x);
+  // Intersect the two original input segments, not the pieces (whose ends may be earlier
+  // rounded crossing points): the same pair then always yields the same point.
+  // The lower-numbered segment is always the one parametrised, so a pair gives one point.
+  uint32_t other = T_.segment[crossed];
+  uint32_t first = std::min(piece.seg, other), second = std::max(piece.seg, other);
+  const double *u = segmentEnd(first, 0), *v = segmentEnd(first, 1);
+  const double *pw = other != kNone ? segmentEnd(second, 0) : P(w);
+  const double *px = other != kNone ? segmentEnd(second, 1) : P(x);
   double ou = orient2d(pw, px, u), ov = orient2d(pw, px, v);
-  double s = ou / (ou - ov);
-  double p[2] = {u[0] + s * (v[0] - u[0]), u[1] + s * (v[1] - u[1])};
-  int windOfCrossed = T_.trackWinding ? T_.wind[crossed] : 0;
+  double p[2];
+  if ((ou > 0 && ov < 0) || (ou < 0 && ov > 0)) {
+    double s = ou / (ou - ov);
+    p[0] = u[0] + s * (v[0] - u[0]), p[1] = u[1] + s * (v[1] - u[1]);
+  } else {
+    // The originals do not cross (only the rounded pieces do): meet at the pieces' crossing.
+    const double *a = P(piece.from), *b = P(piece.to);
+    double oa = orient2d(P(w), P(x), a), ob = orient2d(P(w), P(x), b);
+    double s = oa / (oa - ob);
+    p[0] = a[0] + s * (b[0] - a[0]), p[1] = a[1] + s * (b[1] - a[1]);
+  }
+  int windOfCrossed = T_.wind[crossed];
   uint32_t q = T_.addVertex(p[0], p[1]);
   Location loc = T_.locate(p, crossed / 3);
   bool onCrossed = loc.where == Where::OnEdge &&
@@ -88,21 +113,22 @@ bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
     uint32_t old = T_.findEdge(w, x);
     if (old != kNone) {
       T_.unfixEdge(old);
-      todo_.push_back({w, r, windOfCrossed});
-      todo_.push_back({r, x, windOfCrossed});
+      todo_.push_back({w, r, windOfCrossed, other});
+      todo_.push_back({r, x, windOfCrossed, other});
       std::vector<uint32_t> stack{old};
       T_.legalize(stack);
     }
   }
-  todo_.push_back({r, piece.to, piece.dir});
-  todo_.push_back({piece.from, r, piece.dir});
+  todo_.push_back({r, piece.to, piece.dir, piece.seg});
+  todo_.push_back({piece.from, r, piece.dir, piece.seg});
   return true;
 }
 
 // Flips the edges crossed by u->end until none is left (Sloan 1993: a crossed edge whose
-// quadrilateral is convex can always be flipped, and one always is), then restores the
-// Delaunay property around the new edges.
-void SegmentInserter::flipAway(uint32_t u, uint32_t end, std::vector<uint32_t>& crossedEdges) {
+// quadrilateral is convex can always be flipped, and one always is), fixes the edge u-end,
+// then restores the Delaunay property around the new edges.
+bool SegmentInserter::flipAway(uint32_t u, uint32_t end, const Piece& piece,
+                               std::vector<uint32_t>& crossedEdges) {
   std::deque<std::pair<uint32_t, uint32_t>> queue;
   for (uint32_t e : crossedEdges) queue.emplace_back(T_.tri[e], T_.tri[next(e)]);
   std::vector<std::pair<uint32_t, uint32_t>> created;
@@ -122,6 +148,9 @@ void SegmentInserter::flipAway(uint32_t u, uint32_t end, std::vector<uint32_t>& 
     else
       created.emplace_back(c, d);
   }
+  uint32_t fixedEdge = T_.findEdge(u, end);
+  if (fixedEdge == kNone) return false;
+  T_.fixEdge(fixedEdge, piece.dir, piece.seg);
   std::vector<uint32_t>& stack = T_.scratch();
   stack.clear();
   for (auto [c, d] : created) {
@@ -129,10 +158,13 @@ void SegmentInserter::flipAway(uint32_t u, uint32_t end, std::vector<uint32_t>& 
     if (e != kNone) stack.push_back(e);
   }
   T_.legalize(stack);
+  return true;
 }
 
-StepResult SegmentInserter::insert(uint32_t a, uint32_t b, uint64_t crossingBudget) {
-  todo_.assign(1, {a, b, 1});
+StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
+  uint32_t a = canonical_[input_.segments[2 * size_t(seg)]];
+  uint32_t b = canonical_[input_.segments[2 * size_t(seg) + 1]];
+  todo_.assign(1, {a, b, 1, seg});
   std::vector<uint32_t> crossedEdges;
   while (!todo_.empty()) {
     Piece piece = todo_.back();
@@ -145,8 +177,8 @@ StepResult SegmentInserter::insert(uint32_t a, uint32_t b, uint64_t crossingBudg
                                                   std::to_string(u) + " toward " +
                                                   std::to_string(v)};
     if (collinear) {
-      T_.fixEdge(h, piece.dir);
-      todo_.push_back({T_.tri[next(h)], v, piece.dir});
+      T_.fixEdge(h, piece.dir, piece.seg);
+      todo_.push_back({T_.tri[next(h)], v, piece.dir, piece.seg});
       continue;
     }
     // Walk across the triangles the piece passes through. Crossed edges run from the
@@ -178,13 +210,10 @@ StepResult SegmentInserter::insert(uint32_t a, uint32_t b, uint64_t crossingBudg
       h = o > 0 ? next(g) : prev(g);
     }
     if (split) continue;
-    flipAway(u, end, crossedEdges);
-    uint32_t e = T_.findEdge(u, end);
-    if (e == kNone)
+    if (!flipAway(u, end, piece, crossedEdges))
       return {Status::BadInput, "internal: segment piece " + std::to_string(u) + "-" +
                                     std::to_string(end) + " missing after flips"};
-    T_.fixEdge(e, piece.dir);
-    if (end != v) todo_.push_back({end, v, piece.dir});
+    if (end != v) todo_.push_back({end, v, piece.dir, piece.seg});
   }
   return {};
 }
@@ -194,7 +223,7 @@ StepResult SegmentInserter::insert(uint32_t a, uint32_t b, uint64_t crossingBudg
 StepResult insertSegments(Triangulation& T, const Pslg& input,
                           const std::vector<uint32_t>& canonical, Stats& stats,
                           const Budget& budget) {
-  SegmentInserter inserter(T, budget);
+  SegmentInserter inserter(T, input, canonical, budget);
   size_t n = input.segmentCount();
   // Rounded crossing points can create a few more crossings; a budget far above any real
   // input's crossing count turns a pathological cascade into an error instead of a hang.
@@ -207,7 +236,7 @@ StepResult insertSegments(Triangulation& T, const Pslg& input,
         stats.warnings.push_back("segment " + std::to_string(s) + " has zero length; dropped");
       continue;
     }
-    StepResult r = inserter.insert(a, b, crossingBudget);
+    StepResult r = inserter.insert(uint32_t(s), crossingBudget);
     if (!r.ok()) {
       r.message = "segment " + std::to_string(s) + ": " + r.message;
       return r;

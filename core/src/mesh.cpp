@@ -147,7 +147,7 @@ Result mesh(const Pslg& input, const Options& options) {
 
   Triangulation T;
   uint32_t n = uint32_t(input.vertexCount());
-  T.trackWinding = constrained && options.fill != FillRule::Triangle;
+  T.trackSegments = constrained;
   T.pts = input.points;
   T.vertexEdge.assign(n, kNone);
   // Each vertex makes about two triangles; reserving avoids regrowth copies.

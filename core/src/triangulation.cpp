@@ -21,16 +21,18 @@ uint32_t Triangulation::newTriangle() {
   tri.resize(tri.size() + 3, kNone);
   opp.resize(opp.size() + 3, kNone);
   fixed.resize(fixed.size() + 3, 0);
-  if (trackWinding) wind.resize(wind.size() + 3, 0);
+  if (trackSegments) {
+    wind.resize(wind.size() + 3, 0);
+    segment.resize(segment.size() + 3, kNone);
+  }
   return t;
 }
 
 void Triangulation::freeTriangle(uint32_t t) {
   for (int k = 0; k < 3; ++k) {
     tri[3 * t + k] = kNone;
+    setAttr(3 * t + k, kPlain, false);
     opp[3 * t + k] = kNone;
-    fixed[3 * t + k] = 0;
-    if (trackWinding) wind[3 * t + k] = 0;
   }
   freeSlots_.push_back(t);
 }
@@ -139,22 +141,18 @@ Location Triangulation::locate(const double* p, uint32_t hint) const {
 uint32_t Triangulation::splitTriangle(uint32_t t, uint32_t v) {
   uint32_t e = 3 * t;
   uint32_t a = tri[e], b = tri[e + 1], c = tri[e + 2];
-  uint32_t o0 = opp[e], o1 = opp[e + 1], o2 = opp[e + 2];
-  uint8_t f0 = fixed[e], f1 = fixed[e + 1], f2 = fixed[e + 2];
-  int32_t w0 = 0, w1 = 0, w2 = 0;
-  if (trackWinding) w0 = wind[e], w1 = wind[e + 1], w2 = wind[e + 2];
+  EdgeAttr ab = attr(e), bc = attr(e + 1), ca = attr(e + 2);
   uint32_t t1 = newTriangle(), t2 = newTriangle();
   setCorners(t, a, b, v);
   setCorners(t1, b, c, v);
   setCorners(t2, c, a, v);
-  link(3 * t, o0);
-  link(3 * t1, o1);
-  link(3 * t2, o2);
-  fixed[3 * t] = f0, fixed[3 * t1] = f1, fixed[3 * t2] = f2;
-  fixed[3 * t + 1] = fixed[3 * t + 2] = 0;
-  if (trackWinding) {
-    wind[3 * t] = w0, wind[3 * t1] = w1, wind[3 * t2] = w2;
-    wind[3 * t + 1] = wind[3 * t + 2] = 0;
+  // Slot 0 of each new triangle is an old edge; slots 1 and 2 are spokes to v.
+  setAttr(3 * t, ab);
+  setAttr(3 * t1, bc);
+  setAttr(3 * t2, ca);
+  for (uint32_t s : {t, t1, t2}) {
+    setAttr(3 * s + 1, kPlain, false);
+    setAttr(3 * s + 2, kPlain, false);
   }
   link(3 * t + 1, 3 * t1 + 2);
   link(3 * t + 2, 3 * t2 + 1);
@@ -170,42 +168,31 @@ uint32_t Triangulation::splitEdge(uint32_t e, uint32_t v) {
   uint32_t t0 = e / 3, t1 = f / 3;
   uint32_t e1 = next(e), e2 = prev(e), f1 = next(f), f2 = prev(f);
   uint32_t a = tri[e], b = tri[e1], c = tri[e2], d = tri[f2];
-  uint32_t oe1 = opp[e1], oe2 = opp[e2], of1 = opp[f1], of2 = opp[f2];
-  uint8_t xe = fixed[e], xf = fixed[f], xe1 = fixed[e1], xe2 = fixed[e2], xf1 = fixed[f1],
-          xf2 = fixed[f2];
-  int32_t we = 0, wf = 0, we1 = 0, we2 = 0, wf1 = 0, wf2 = 0;
-  if (trackWinding)
-    we = wind[e], wf = wind[f], we1 = wind[e1], we2 = wind[e2], wf1 = wind[f1], wf2 = wind[f2];
+  EdgeAttr ab = attr(e), ba = attr(f), bc = attr(e1), ca = attr(e2), ad = attr(f1), db = attr(f2);
   uint32_t t2 = newTriangle(), t3 = newTriangle();
   setCorners(t0, c, a, v);
   setCorners(t1, b, c, v);
   setCorners(t2, a, d, v);
   setCorners(t3, d, b, v);
-  // Outer edges keep their twins and flags; the halves of the split edge inherit its flags.
-  uint32_t outer[4] = {3 * t0, 3 * t1, 3 * t2, 3 * t3};
-  uint32_t outerOpp[4] = {oe2, oe1, of1, of2};
-  uint8_t outerFixed[4] = {xe2, xe1, xf1, xf2};
-  int32_t outerWind[4] = {we2, we1, wf1, wf2};
-  for (int i = 0; i < 4; ++i) {
-    link(outer[i], outerOpp[i]);
-    fixed[outer[i]] = outerFixed[i];
-    fixed[outer[i] + 1] = fixed[outer[i] + 2] = 0;
-    if (trackWinding) {
-      wind[outer[i]] = outerWind[i];
-      wind[outer[i] + 1] = wind[outer[i] + 2] = 0;
-    }
-    scratch_.push_back(outer[i]);
-  }
+  // Slot 0: the outer edges, keeping twins and flags. The halves of the split edge (a-v,
+  // v-b) inherit its flags; the other spokes are plain.
+  setAttr(3 * t0, ca);
+  setAttr(3 * t1, bc);
+  setAttr(3 * t2, ad);
+  setAttr(3 * t3, db);
+  setAttr(3 * t0 + 1, ab, false);  // a->v
+  setAttr(3 * t1 + 2, ab, false);  // v->b
+  setAttr(3 * t2 + 2, ba, false);  // v->a
+  setAttr(3 * t3 + 1, ba, false);  // b->v
+  setAttr(3 * t0 + 2, kPlain, false);
+  setAttr(3 * t1 + 1, kPlain, false);
+  setAttr(3 * t2 + 1, kPlain, false);
+  setAttr(3 * t3 + 2, kPlain, false);
   link(3 * t0 + 1, 3 * t2 + 2);  // a->v | v->a
   link(3 * t0 + 2, 3 * t1 + 1);  // v->c | c->v
   link(3 * t1 + 2, 3 * t3 + 1);  // v->b | b->v
   link(3 * t2 + 1, 3 * t3 + 2);  // d->v | v->d
-  fixed[3 * t0 + 1] = fixed[3 * t1 + 2] = xe;
-  fixed[3 * t2 + 2] = fixed[3 * t3 + 1] = xf;
-  if (trackWinding) {
-    wind[3 * t0 + 1] = wind[3 * t1 + 2] = we;
-    wind[3 * t2 + 2] = wind[3 * t3 + 1] = wf;
-  }
+  for (uint32_t s : {t0, t1, t2, t3}) scratch_.push_back(3 * s);
   return v;
 }
 
@@ -229,24 +216,17 @@ void Triangulation::flip(uint32_t e) {
   uint32_t t0 = e / 3, t1 = f / 3;
   uint32_t e1 = next(e), e2 = prev(e), f1 = next(f), f2 = prev(f);
   uint32_t a = tri[e], b = tri[e1], c = tri[e2], d = tri[f2];
-  uint32_t oe1 = opp[e1], oe2 = opp[e2], of1 = opp[f1], of2 = opp[f2];
-  uint8_t xe1 = fixed[e1], xe2 = fixed[e2], xf1 = fixed[f1], xf2 = fixed[f2];
-  int32_t we1 = 0, we2 = 0, wf1 = 0, wf2 = 0;
-  if (trackWinding) we1 = wind[e1], we2 = wind[e2], wf1 = wind[f1], wf2 = wind[f2];
+  EdgeAttr bc = attr(e1), ca = attr(e2), ad = attr(f1), db = attr(f2);
   // Quadrilateral a, d, b, c (counter-clockwise) gets the diagonal c-d.
   setCorners(t0, c, a, d);
   setCorners(t1, d, b, c);
-  link(3 * t0, oe2);
-  link(3 * t0 + 1, of1);
-  link(3 * t1, of2);
-  link(3 * t1 + 1, oe1);
+  setAttr(3 * t0, ca);
+  setAttr(3 * t0 + 1, ad);
+  setAttr(3 * t1, db);
+  setAttr(3 * t1 + 1, bc);
+  setAttr(3 * t0 + 2, kPlain, false);
+  setAttr(3 * t1 + 2, kPlain, false);
   link(3 * t0 + 2, 3 * t1 + 2);
-  fixed[3 * t0] = xe2, fixed[3 * t0 + 1] = xf1, fixed[3 * t0 + 2] = 0;
-  fixed[3 * t1] = xf2, fixed[3 * t1 + 1] = xe1, fixed[3 * t1 + 2] = 0;
-  if (trackWinding) {
-    wind[3 * t0] = we2, wind[3 * t0 + 1] = wf1, wind[3 * t0 + 2] = 0;
-    wind[3 * t1] = wf2, wind[3 * t1 + 1] = we1, wind[3 * t1 + 2] = 0;
-  }
 }
 
 void Triangulation::legalizeFrom(uint32_t v, std::vector<uint32_t>& stack) {
@@ -311,17 +291,18 @@ uint32_t Triangulation::findEdge(uint32_t a, uint32_t b) const {
   return kNone;
 }
 
-void Triangulation::fixEdge(uint32_t e, int dir) {
+void Triangulation::fixEdge(uint32_t e, int dir, uint32_t seg) {
   fixed[e] = fixed[opp[e]] = 1;
-  if (trackWinding) {
+  if (trackSegments) {
     wind[e] += dir;
     wind[opp[e]] -= dir;
+    if (seg != kNone) segment[e] = segment[opp[e]] = seg;
   }
 }
 
 void Triangulation::unfixEdge(uint32_t e) {
-  fixed[e] = fixed[opp[e]] = 0;
-  if (trackWinding) wind[e] = wind[opp[e]] = 0;
+  setAttr(e, kPlain, false);
+  setAttr(opp[e], kPlain, false);
 }
 
 bool Triangulation::removeVertex(uint32_t v) {
@@ -369,22 +350,13 @@ bool Triangulation::removeVertex(uint32_t v) {
   // Degree 3: v sits inside triangle ring[0..2]; merge its three triangles into that one.
   uint32_t ea = findEdge(v, ring[0]);
   uint32_t eb = opp[prev(ea)], ec = opp[prev(eb)];
-  uint32_t outer[3] = {next(ea), next(eb), next(ec)};
-  uint32_t outerOpp[3], t = ea / 3;
-  uint8_t outerFixed[3];
-  int32_t outerWind[3] = {0, 0, 0};
-  for (int i = 0; i < 3; ++i) {
-    outerOpp[i] = opp[outer[i]];
-    outerFixed[i] = fixed[outer[i]];
-    if (trackWinding) outerWind[i] = wind[outer[i]];
-  }
+  uint32_t t = ea / 3;
+  EdgeAttr outer[3] = {attr(next(ea)), attr(next(eb)), attr(next(ec))};
   freeTriangle(eb / 3);
   freeTriangle(ec / 3);
   setCorners(t, ring[0], ring[1], ring[2]);
-  for (int i = 0; i < 3; ++i) {
-    link(3 * t + i, outerOpp[i]);
-    fixed[3 * t + i] = outerFixed[i];
-    if (trackWinding) wind[3 * t + i] = outerWind[i];
+  for (uint32_t i = 0; i < 3; ++i) {
+    setAttr(3 * t + i, outer[i]);
     stack.push_back(3 * t + i);
   }
   vertexEdge[v] = kNone;

@@ -39,10 +39,13 @@ class Triangulation {
   std::vector<uint32_t> tri;    // 3 per triangle; tri[3t] == kNone marks a free slot
   std::vector<uint32_t> opp;    // twin half-edge, 3 per triangle
   std::vector<uint8_t> fixed;   // per half-edge: 1 if the edge lies on an input segment
-  // Net winding contribution of input segments along each half-edge (segments a->b minus
-  // segments b->a), kept only when trackWinding is set; twins hold opposite values.
+  // Kept only when trackSegments is set (constrained triangulations), per half-edge:
+  // the net winding of the input segments along it (segments a->b minus segments b->a;
+  // twins hold opposite values), and the index of an input segment it lies on (crossing
+  // points are computed from the original segments, so rounding errors never compound).
   std::vector<int32_t> wind;
-  bool trackWinding = false;
+  std::vector<uint32_t> segment;
+  bool trackSegments = false;
   std::vector<uint32_t> vertexEdge;  // per vertex: a half-edge leaving it, kNone if unused
 
   uint32_t vertexCount() const { return uint32_t(pts.size() / 2); }
@@ -88,9 +91,9 @@ class Triangulation {
   // The half-edge leaving a with its other end at b, or kNone.
   uint32_t findEdge(uint32_t a, uint32_t b) const;
 
-  // Marks the edge of half-edge e (both directions) as lying on an input segment; with
-  // winding tracking, adds `dir` (+1 along e, -1 against) to its net winding.
-  void fixEdge(uint32_t e, int dir);
+  // Marks the edge of half-edge e (both directions) as lying on input segment `seg`; with
+  // trackSegments, adds `dir` (+1 along e, -1 against) to its net winding.
+  void fixEdge(uint32_t e, int dir, uint32_t seg = kNone);
   void unfixEdge(uint32_t e);
 
   uint32_t liveTriangleCount() const { return triangleSlots() - uint32_t(freeSlots_.size()); }
@@ -104,6 +107,23 @@ class Triangulation {
     opp[e] = f;
     opp[f] = e;
   }
+  // What a half-edge carries besides its endpoints, moved as a unit by splits and flips.
+  struct EdgeAttr {
+    uint32_t twin;
+    uint8_t fixed;
+    int32_t wind;
+    uint32_t segment;
+  };
+  EdgeAttr attr(uint32_t e) const {
+    return {opp[e], fixed[e], trackSegments ? wind[e] : 0, trackSegments ? segment[e] : kNone};
+  }
+  // Sets e's flags from a (twin too, unless noTwin).
+  void setAttr(uint32_t e, const EdgeAttr& a, bool withTwin = true) {
+    if (withTwin) link(e, a.twin);
+    fixed[e] = a.fixed;
+    if (trackSegments) wind[e] = a.wind, segment[e] = a.segment;
+  }
+  static constexpr EdgeAttr kPlain = {kNone, 0, 0, kNone};
   uint32_t splitTriangle(uint32_t t, uint32_t v);
   uint32_t splitEdge(uint32_t e, uint32_t v);
   void legalizeFrom(uint32_t v, std::vector<uint32_t>& stack);

@@ -1,0 +1,179 @@
+// Segment insertion at the store level: each segment becomes a chain of fixed edges, every
+// other edge is locally Delaunay (which makes the whole triangulation constrained Delaunay),
+// crossings, overlaps and vertices on segments are resolved.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+#include "acutemesh/predicates.h"
+#include "build.h"
+#include "triangulation.h"
+
+using namespace acutemesh;
+using namespace acutemesh::detail;
+
+namespace {
+
+struct Built {
+  Triangulation T;
+  std::vector<uint32_t> canonical;
+  StepResult result;
+  Stats stats;
+};
+
+Built buildCdt(const Pslg& in) {
+  Built b;
+  b.T.trackSegments = true;
+  b.T.pts = in.points;
+  b.T.vertexEdge.assign(in.vertexCount(), kNone);
+  Options options;
+  Budget budget(options);
+  b.result = buildDelaunay(b.T, uint32_t(in.vertexCount()), b.canonical, budget);
+  if (b.result.ok()) b.result = insertSegments(b.T, in, b.canonical, b.stats, budget);
+  return b;
+}
+
+// Every non-fixed edge between two real triangles is locally Delaunay.
+size_t nonDelaunayEdges(const Triangulation& T) {
+  size_t bad = 0;
+  for (uint32_t e = 0; e < T.tri.size(); ++e) {
+    if (T.isFree(e / 3) || T.isGhost(e / 3) || T.isGhost(T.opp[e] / 3)) continue;
+    bad += T.mustFlip(e);
+  }
+  return bad;
+}
+
+size_t invertedTriangles(const Triangulation& T) {
+  size_t bad = 0;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t)
+    if (!T.isFree(t) && !T.isGhost(t))
+      bad += orient2d(T.point(T.tri[3 * t]), T.point(T.tri[3 * t + 1]),
+                      T.point(T.tri[3 * t + 2])) <= 0;
+  return bad;
+}
+
+// Searches a path of fixed edges from a to b on which every step moves strictly closer to b
+// along a->b. Vertices on it must lie exactly on the segment unless they are crossing points
+// added by insertion (index >= inputCount), which are rounded.
+bool isFixedChain(const Triangulation& T, uint32_t a, uint32_t b, uint32_t inputCount) {
+  std::vector<uint32_t> stack{a};
+  std::vector<uint8_t> seen(T.vertexCount(), 0);
+  while (!stack.empty()) {
+    uint32_t at = stack.back();
+    stack.pop_back();
+    if (at == b) return true;
+    if (seen[at]) continue;
+    seen[at] = 1;
+    uint32_t e0 = T.vertexEdge[at], e = e0;
+    do {
+      uint32_t w = T.tri[next(e)];
+      bool onLine = w == b || w >= inputCount || orient2d(T.point(a), T.point(b), T.point(w)) == 0;
+      if (T.fixed[e] && w != kGhost && onLine &&
+          (w == b || (dot2d(T.point(w), T.point(at), T.point(b)) < 0 &&
+                      dot2d(T.point(at), T.point(w), T.point(b)) > 0)))
+        stack.push_back(w);
+      e = T.opp[prev(e)];
+    } while (e != e0);
+  }
+  return false;
+}
+
+void expectValidCdt(const Pslg& in, const Built& b) {
+  ASSERT_TRUE(b.result.ok()) << b.result.message;
+  EXPECT_EQ(invertedTriangles(b.T), 0u);
+  EXPECT_EQ(nonDelaunayEdges(b.T), 0u);
+  for (size_t s = 0; s < in.segmentCount(); ++s) {
+    uint32_t x = b.canonical[in.segments[2 * s]], y = b.canonical[in.segments[2 * s + 1]];
+    if (x != y)
+      EXPECT_TRUE(isFixedChain(b.T, x, y, uint32_t(in.vertexCount()))) << "segment " << s;
+  }
+}
+
+}  // namespace
+
+TEST(Cdt, PolygonWithDiagonalsAcrossDelaunayEdges) {
+  // A zig-zag polygon whose edges are not Delaunay edges of its vertices.
+  Pslg in;
+  int n = 40;
+  for (int i = 0; i < n; ++i) {
+    double a = 2 * M_PI * i / n, r = i % 2 ? 1.0 : 0.35;
+    in.points.push_back(r * std::cos(a));
+    in.points.push_back(r * std::sin(a));
+    in.segments.push_back(i);
+    in.segments.push_back((i + 1) % n);
+  }
+  Built b = buildCdt(in);
+  expectValidCdt(in, b);
+  EXPECT_EQ(b.T.vertexCount(), uint32_t(n));  // no vertex needed
+}
+
+TEST(Cdt, RandomCrossingSegments) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int round = 0; round < 5; ++round) {
+    Pslg in;
+    for (int i = 0; i < 120; ++i) in.points.push_back(u(rng)), in.points.push_back(u(rng));
+    for (int s = 0; s < 40; ++s) in.segments.push_back(rng() % 120), in.segments.push_back(rng() % 120);
+    Built b = buildCdt(in);
+    expectValidCdt(in, b);
+    EXPECT_GT(b.T.vertexCount(), 120u);  // 40 random segments always cross somewhere
+  }
+}
+
+TEST(Cdt, GridOfCrossingLines) {
+  Pslg in;
+  int k = 15;
+  for (int i = 0; i < k; ++i) {
+    double c = 0.1 + i * 0.37;
+    uint32_t base = uint32_t(in.vertexCount());
+    in.points.insert(in.points.end(), {c, -1, c, 7, -1, c, 7, c});
+    in.segments.insert(in.segments.end(), {base, base + 1, base + 2, base + 3});
+  }
+  Built b = buildCdt(in);
+  expectValidCdt(in, b);
+  EXPECT_EQ(b.T.vertexCount(), uint32_t(4 * k + k * k));
+}
+
+TEST(Cdt, NearlyParallelCrossings) {
+  Pslg in;
+  for (int i = 0; i < 30; ++i) {
+    double tilt = 1e-9 * (i + 1);
+    uint32_t base = uint32_t(in.vertexCount());
+    in.points.insert(in.points.end(), {-1.0, -tilt * (i % 3), 1.0, tilt});
+    in.segments.insert(in.segments.end(), {base, base + 1});
+  }
+  in.points.insert(in.points.end(), {0, 1, 0, -1});
+  Built b = buildCdt(in);
+  expectValidCdt(in, b);
+}
+
+TEST(Cdt, OverlapsVerticesOnSegmentsAndZeroLength) {
+  Pslg in;
+  in.points = {0, 0, 10, 0, 5, 0, 15, 0, 3, 0, 7, 5, 7, -5, 0, 0};
+  in.segments = {0, 1,   // along the x axis
+                 2, 3,   // overlaps it from x=5 to 10
+                 5, 6,   // crosses both at x=7
+                 4, 4,   // zero length
+                 7, 1};  // 7 duplicates 0: same as segment 0
+  Built b = buildCdt(in);
+  expectValidCdt(in, b);
+  ASSERT_FALSE(b.stats.warnings.empty());
+  EXPECT_NE(b.stats.warnings[0].find("zero length"), std::string::npos);
+  // Vertex 4 (x=3) and 2 (x=5) split the axis segment; (7,0) is the only new vertex.
+  EXPECT_EQ(b.T.vertexCount(), 9u);
+  EXPECT_EQ(b.T.pts[16], 7.0);
+  EXPECT_EQ(b.T.pts[17], 0.0);
+}
+
+TEST(Cdt, WindingAddsUpOnOverlappingSegments) {
+  Pslg in;
+  in.points = {0, 0, 4, 0, 4, 4, 0, 4};
+  in.segments = {0, 1, 1, 2, 2, 3, 3, 0, 0, 1};  // edge 0->1 twice
+  Built b = buildCdt(in);
+  expectValidCdt(in, b);
+  uint32_t e = b.T.findEdge(0, 1);
+  ASSERT_NE(e, kNone);
+  EXPECT_EQ(b.T.wind[e], 2);
+  EXPECT_EQ(b.T.wind[b.T.opp[e]], -2);
+}
