@@ -1,1 +1,340 @@
-// placeholder
+// Mesh output: Triangle's .node/.ele/.poly, JSON, OFF, OBJ and SVG.
+//
+// Coordinates are written so that they read back as the same doubles: the shortest
+// round-trip form (std::to_chars) where the library has it, "%.17g" otherwise. Vertex indices
+// in .node/.ele/.poly are 0-based (Triangle's -z convention), which each file states in its
+// first line; OBJ is 1-based by definition.
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "acutemesh/io.h"
+
+#if defined(__cpp_lib_to_chars) && !defined(ACUTEMESH_NO_FLOAT_CHARCONV)
+#define ACUTEMESH_FLOAT_TO_CHARS 1
+#else
+#define ACUTEMESH_FLOAT_TO_CHARS 0
+#endif
+
+namespace acutemesh {
+namespace {
+
+const char kTriangleHeader[] = "# written by acutemesh, indices 0-based\n";
+
+void putDouble(std::string& s, double v) {
+  char buf[40];
+#if ACUTEMESH_FLOAT_TO_CHARS
+  std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v);
+  s.append(buf, r.ptr);
+#else
+  const int n = std::snprintf(buf, sizeof buf, "%.17g", v);
+  s.append(buf, static_cast<size_t>(n));
+#endif
+}
+
+// JSON has no NaN or infinity: those become null (and are rejected when read back).
+void putJsonDouble(std::string& s, double v) {
+  if (std::isfinite(v)) {
+    putDouble(s, v);
+  } else {
+    s += "null";
+  }
+}
+
+void putUint(std::string& s, uint64_t v) {
+  char buf[24];
+  std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v);
+  s.append(buf, r.ptr);
+}
+
+// Rough per-item sizes, to reserve once.
+size_t pointsBytes(const Mesh& m) { return m.vertexCount() * 48; }
+size_t trianglesBytes(const Mesh& m) { return m.triangleCount() * 40; }
+
+void putNodeSection(std::string& s, const Mesh& m) {
+  const size_t n = m.vertexCount();
+  putUint(s, n);
+  s += " 2 0 0\n";
+  for (size_t i = 0; i < n; ++i) {
+    putUint(s, i);
+    s += ' ';
+    putDouble(s, m.points[2 * i]);
+    s += ' ';
+    putDouble(s, m.points[2 * i + 1]);
+    s += '\n';
+  }
+}
+
+// Fixed-point with up to 2 decimals, trailing zeros dropped (SVG only: small, not exact).
+void putShort(std::string& s, double v) {
+  char buf[40];
+  int n = std::snprintf(buf, sizeof buf, "%.2f", v);
+  if (n <= 0 || n >= static_cast<int>(sizeof buf)) return;
+  while (n > 0 && buf[n - 1] == '0') --n;
+  if (n > 0 && buf[n - 1] == '.') --n;
+  if (n == 2 && buf[0] == '-' && buf[1] == '0') {
+    buf[0] = '0';
+    n = 1;
+  }
+  s.append(buf, static_cast<size_t>(n));
+}
+
+bool writeFile(const std::string& path, const std::string& text, std::string& error) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) {
+    error = path + ": cannot write (" + std::strerror(errno) + ")";
+    return false;
+  }
+  const size_t put = text.empty() ? 0 : std::fwrite(text.data(), 1, text.size(), f);
+  int err = put == text.size() ? 0 : errno;
+  if (std::fclose(f) != 0 && err == 0) err = errno ? errno : EIO;
+  if (put != text.size() || err != 0) {
+    error = path + ": cannot write (" + std::strerror(err ? err : EIO) + ")";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string formatNode(const Mesh& m) {
+  std::string s;
+  s.reserve(pointsBytes(m) + 64);
+  s += kTriangleHeader;
+  putNodeSection(s, m);
+  return s;
+}
+
+std::string formatEle(const Mesh& m) {
+  std::string s;
+  s.reserve(trianglesBytes(m) + 64);
+  s += kTriangleHeader;
+  const size_t t = m.triangleCount();
+  putUint(s, t);
+  s += " 3 0\n";
+  for (size_t i = 0; i < t; ++i) {
+    putUint(s, i);
+    for (int k = 0; k < 3; ++k) {
+      s += ' ';
+      putUint(s, m.triangles[3 * i + k]);
+    }
+    s += '\n';
+  }
+  return s;
+}
+
+std::string formatPoly(const Mesh& m) {
+  std::string s;
+  const size_t e = m.segments.size() / 2;
+  s.reserve(pointsBytes(m) + e * 32 + 64);
+  s += kTriangleHeader;
+  putNodeSection(s, m);
+  putUint(s, e);
+  s += " 0\n";
+  for (size_t i = 0; i < e; ++i) {
+    putUint(s, i);
+    s += ' ';
+    putUint(s, m.segments[2 * i]);
+    s += ' ';
+    putUint(s, m.segments[2 * i + 1]);
+    s += '\n';
+  }
+  s += "0\n";  // holes: the mesh itself says what is inside
+  return s;
+}
+
+std::string formatJson(const Mesh& m) {
+  std::string s;
+  s.reserve(pointsBytes(m) + trianglesBytes(m) + m.segments.size() * 16 + 64);
+  s += "{\n\"vertices\": [";
+  const size_t n = m.vertexCount();
+  for (size_t i = 0; i < n; ++i) {
+    s += i ? ",\n[" : "\n[";
+    putJsonDouble(s, m.points[2 * i]);
+    s += ',';
+    putJsonDouble(s, m.points[2 * i + 1]);
+    s += ']';
+  }
+  s += "],\n\"triangles\": [";
+  const size_t t = m.triangleCount();
+  for (size_t i = 0; i < t; ++i) {
+    s += i ? ",\n[" : "\n[";
+    putUint(s, m.triangles[3 * i]);
+    s += ',';
+    putUint(s, m.triangles[3 * i + 1]);
+    s += ',';
+    putUint(s, m.triangles[3 * i + 2]);
+    s += ']';
+  }
+  s += "],\n\"segments\": [";
+  const size_t e = m.segments.size() / 2;
+  for (size_t i = 0; i < e; ++i) {
+    s += i ? ",\n[" : "\n[";
+    putUint(s, m.segments[2 * i]);
+    s += ',';
+    putUint(s, m.segments[2 * i + 1]);
+    s += ']';
+  }
+  s += "]\n}\n";
+  return s;
+}
+
+std::string formatOff(const Mesh& m) {
+  std::string s;
+  s.reserve(pointsBytes(m) + trianglesBytes(m) + 64);
+  const size_t n = m.vertexCount(), t = m.triangleCount();
+  s += "OFF\n";
+  putUint(s, n);
+  s += ' ';
+  putUint(s, t);
+  s += " 0\n";
+  for (size_t i = 0; i < n; ++i) {
+    putDouble(s, m.points[2 * i]);
+    s += ' ';
+    putDouble(s, m.points[2 * i + 1]);
+    s += " 0\n";
+  }
+  for (size_t i = 0; i < t; ++i) {
+    s += '3';
+    for (int k = 0; k < 3; ++k) {
+      s += ' ';
+      putUint(s, m.triangles[3 * i + k]);
+    }
+    s += '\n';
+  }
+  return s;
+}
+
+std::string formatObj(const Mesh& m) {
+  std::string s;
+  s.reserve(pointsBytes(m) + trianglesBytes(m) + 64);
+  s += "# written by acutemesh\n";
+  const size_t n = m.vertexCount(), t = m.triangleCount();
+  for (size_t i = 0; i < n; ++i) {
+    s += "v ";
+    putDouble(s, m.points[2 * i]);
+    s += ' ';
+    putDouble(s, m.points[2 * i + 1]);
+    s += " 0\n";
+  }
+  for (size_t i = 0; i < t; ++i) {
+    s += 'f';
+    for (int k = 0; k < 3; ++k) {
+      s += ' ';
+      putUint(s, static_cast<uint64_t>(m.triangles[3 * i + k]) + 1);
+    }
+    s += '\n';
+  }
+  return s;
+}
+
+std::string formatSvg(const Mesh& m) {
+  // Fit the bounding box into a 1000-unit square (aspect kept), y flipped to point up.
+  const size_t n = m.vertexCount();
+  double minX = 0, minY = 0, maxX = 0, maxY = 0;
+  bool any = false;
+  for (size_t i = 0; i < n; ++i) {
+    const double x = m.points[2 * i], y = m.points[2 * i + 1];
+    if (!std::isfinite(x) || !std::isfinite(y)) continue;
+    if (!any) {
+      minX = maxX = x;
+      minY = maxY = y;
+      any = true;
+    } else {
+      minX = std::min(minX, x);
+      maxX = std::max(maxX, x);
+      minY = std::min(minY, y);
+      maxY = std::max(maxY, y);
+    }
+  }
+  const double extent = std::max(maxX - minX, maxY - minY);
+  const double size = 1000.0;
+  const double scale = extent > 0 && std::isfinite(extent) ? size / extent : 1.0;
+  const double w = (maxX - minX) * scale, h = (maxY - minY) * scale;
+  const double margin = 10.0;
+  auto px = [&](uint32_t v) { return (m.points[2 * v] - minX) * scale; };
+  auto py = [&](uint32_t v) { return (maxY - m.points[2 * v + 1]) * scale; };
+
+  std::string s;
+  s.reserve(m.triangleCount() * 48 + m.segments.size() * 16 + 512);
+  s += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"";
+  putShort(s, -margin);
+  s += ' ';
+  putShort(s, -margin);
+  s += ' ';
+  putShort(s, w + 2 * margin);
+  s += ' ';
+  putShort(s, h + 2 * margin);
+  s += "\">\n<path fill=\"#dde6f3\" stroke=\"#1f3b63\" stroke-width=\"0.6\" "
+       "stroke-linejoin=\"round\" d=\"";
+  const size_t t = m.triangleCount();
+  for (size_t i = 0; i < t; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = m.triangles[3 * i + k];
+      if (v >= n) continue;
+      s += k ? 'L' : 'M';
+      putShort(s, px(v));
+      s += ' ';
+      putShort(s, py(v));
+    }
+    s += 'Z';
+  }
+  s += "\"/>\n<path fill=\"none\" stroke=\"#c8102e\" stroke-width=\"2\" "
+       "stroke-linecap=\"round\" d=\"";
+  const size_t e = m.segments.size() / 2;
+  for (size_t i = 0; i < e; ++i) {
+    const uint32_t a = m.segments[2 * i], b = m.segments[2 * i + 1];
+    if (a >= n || b >= n) continue;
+    s += 'M';
+    putShort(s, px(a));
+    s += ' ';
+    putShort(s, py(a));
+    s += 'L';
+    putShort(s, px(b));
+    s += ' ';
+    putShort(s, py(b));
+  }
+  s += "\"/>\n</svg>\n";
+  return s;
+}
+
+ParseResult writeMeshFiles(const Mesh& m, const std::string& base,
+                           const std::vector<std::string>& formats) {
+  using Formatter = std::string (*)(const Mesh&);
+  struct Entry {
+    const char* name;
+    Formatter f;
+  };
+  static const Entry kFormats[] = {{"node", formatNode}, {"ele", formatEle},
+                                   {"poly", formatPoly}, {"json", formatJson},
+                                   {"off", formatOff},   {"obj", formatObj},
+                                   {"svg", formatSvg}};
+  ParseResult r;
+  std::vector<Formatter> todo;
+  for (const std::string& name : formats) {
+    Formatter f = nullptr;
+    for (const Entry& e : kFormats)
+      if (name == e.name) f = e.f;
+    if (!f) {
+      r.ok = false;
+      r.message = "expected an output format among node, ele, poly, json, off, obj, svg, "
+                  "found '" + name + "'";
+      return r;
+    }
+    todo.push_back(f);
+  }
+  for (size_t i = 0; i < formats.size(); ++i) {
+    std::string error;
+    if (!writeFile(base + "." + formats[i], todo[i](m), error)) {
+      r.ok = false;
+      r.message = error;
+      return r;
+    }
+  }
+  return r;
+}
+
+}  // namespace acutemesh

@@ -1,7 +1,10 @@
 // Reading inputs and writing meshes in this field's common formats. Parsers take the text
 // (so the same code serves files, the CLI, and the browser) and report errors as
-// "NAME:LINE: what was expected"; nothing throws. A count that promises more items than the
-// text holds is an error, never a huge allocation.
+// "NAME:LINE: expected ..., found ..."; nothing throws. A count that promises more items than
+// the text holds is an error, never a huge allocation. LINE is 1-based; an item missing at the
+// end of the text is reported at the line where the text ends. Non-finite coordinates (nan,
+// inf, or beyond the double range) are errors. Parsers fill `out` only on success (replacing
+// its contents); things tolerated are reported in Input::warnings, also as "NAME:LINE: ...".
 #pragma once
 
 #include <string>
@@ -31,22 +34,39 @@ struct ParseResult {
 // Triangle's .poly: "<#vertices> <dim=2> <#attributes> <#markers>", vertex lines
 // "<id> <x> <y> [attributes] [marker]", "<#segments> <#markers>", segment lines
 // "<id> <a> <b> [marker]", "<#holes>", hole lines "<id> <x> <y>", optional regional
-// attributes (ignored). '#' starts a comment. Indices are 0- or 1-based, as the first vertex id
-// says. A vertex count of 0 means the vertices are in a separate .node file: pass its text as
-// `nodeText` (the CLI reads BASE.node for that).
+// attributes (checked for form, then ignored). '#' starts a comment; blank lines are skipped.
+// Indices are 0- or 1-based, as the first vertex id says (another first id: 1-based, with a
+// warning, as Triangle does); segment endpoints come out 0-based. Attributes and markers are
+// ignored, and may be left out as Triangle allows; more fields than the header announces is
+// an error. The hole section may be missing at the end (no holes). A vertex count of 0 means
+// the vertices are in a separate .node file: pass its text as `nodeText` and its name as
+// `nodeName` (readInputFile reads BASE.node for that).
 ParseResult parsePoly(std::string_view text, const std::string& name, Input& out,
                       std::string_view nodeText = {}, const std::string& nodeName = {});
 ParseResult parseNode(std::string_view text, const std::string& name, Input& out);
-// JSON: either an acutemesh PSLG {"vertices": [[x,y],...], "segments": [[i,j],...],
-// "holes": [[x,y],...]} or {"rings": [[[x,y],...],...]} (closed rings, last point not
-// repeated, become directed segments), or a CG:SHOP 2025 instance (has "points_x").
+// JSON (strict RFC 8259 syntax, nesting depth limited): one top-level object, either
+//  - an acutemesh PSLG {"vertices": [[x,y],...], "segments": [[i,j],...], "holes": [[x,y],...]}
+//    (segments, holes optional; "triangles", as formatJson writes, is ignored), or
+//  - {"rings": [[[x,y],...],...]}: each ring closes implicitly (a repeated first point at the
+//    end is dropped, with a warning) and becomes vertices plus directed segments in ring
+//    order; sets Input::hasRings, or
+//  - a CG:SHOP 2025 instance ("points_x", "points_y", "region_boundary" (a ring of indices,
+//    becomes segments), "additional_constraints" (index pairs), "instance_uid", "num_points").
+// Keys of different kinds may not be mixed; unknown keys are skipped with a warning.
 ParseResult parseJson(std::string_view text, const std::string& name, Input& out);
 
-// Reads a file by extension (.poly, .node, .json); for a .poly without vertices it reads the
-// .node file beside it.
+// Reads a file by extension (.poly, .node, .json, any case); for a .poly without vertices it
+// reads BASE.node beside it. Messages name the file by `path`; an unreadable file gives
+// "PATH: cannot open (reason)".
 ParseResult readInputFile(const std::string& path, Input& out);
 
-// Writers return the text; writeMeshFiles writes BASE.EXT for each format.
+// Writers return the text. Coordinates are written to read back as the same doubles
+// (shortest round-trip form). .node/.ele/.poly number vertices and items from 0 (as Triangle's
+// -z), which their first line states as a comment; OBJ is 1-based by definition. .poly holds
+// the mesh vertices, the mesh's segment edges and no holes. OFF and OBJ put z = 0. SVG fits
+// the bounding box into a 1000-unit view with y pointing up (coordinates rounded to 0.01),
+// triangles in one path, segment edges drawn thicker. writeMeshFiles writes BASE.EXT for each
+// format (EXT = the format name); an unknown name fails before anything is written.
 std::string formatNode(const Mesh& m);
 std::string formatEle(const Mesh& m);
 std::string formatPoly(const Mesh& m);  // mesh vertices plus its segment edges
