@@ -36,10 +36,12 @@ struct StepResult {
   bool ok() const { return status == Status::Ok; }
 };
 
-// Delaunay triangulation of the first `count` vertices of T.pts, inserted in Hilbert-curve
-// order. canonical[i] becomes the vertex that input vertex i ended up as (itself, or the
-// earlier vertex with identical coordinates).
-StepResult buildDelaunay(Triangulation& T, uint32_t count, std::vector<uint32_t>& canonical,
+// Delaunay triangulation of `points` (x, y interleaved). The vertices are stored in T in
+// insertion order (along a Hilbert curve): inputOf[k] is the input index of T's vertex k,
+// canonical[i] the vertex that input vertex i ended up as (its own, or that of an earlier
+// vertex with identical coordinates, which then stays unconnected).
+StepResult buildDelaunay(Triangulation& T, const std::vector<double>& points,
+                         std::vector<uint32_t>& canonical, std::vector<uint32_t>& inputOf,
                          const Budget& budget);
 
 // Inserts every input segment as a chain of fixed edges, splitting it at vertices that lie

@@ -57,37 +57,47 @@ bool samePoint(const double* a, const double* b) { return a[0] == b[0] && a[1] =
 
 }  // namespace
 
-StepResult buildDelaunay(Triangulation& T, uint32_t count, std::vector<uint32_t>& canonical,
+StepResult buildDelaunay(Triangulation& T, const std::vector<double>& points,
+                         std::vector<uint32_t>& canonical, std::vector<uint32_t>& inputOf,
                          const Budget& budget) {
-  canonical.resize(count);
-  for (uint32_t i = 0; i < count; ++i) canonical[i] = i;
+  uint32_t count = uint32_t(points.size() / 2);
   if (count < 3)
     return {Status::BadInput, "input has " + std::to_string(count) +
                                   " vertices; a triangulation needs at least 3"};
-  std::vector<uint32_t> order = hilbertOrder(T.pts, count);
+  // Vertices are stored in insertion order: neighbours in the mesh are then neighbours in
+  // memory, which matters more than anything else for speed on large inputs.
+  inputOf = hilbertOrder(points, count);
+  T.pts.resize(2 * size_t(count));
+  T.vertexEdge.assign(count, kNone);
+  canonical.resize(count);
+  for (uint32_t k = 0; k < count; ++k) {
+    T.pts[2 * size_t(k)] = points[2 * size_t(inputOf[k])];
+    T.pts[2 * size_t(k) + 1] = points[2 * size_t(inputOf[k]) + 1];
+    canonical[inputOf[k]] = k;
+  }
 
-  // The first triangle: the first vertex, the next distinct one, the next not collinear.
-  uint32_t a = order[0], b = kNone, c = kNone;
-  for (uint32_t i : order)
-    if (b == kNone && !samePoint(T.point(i), T.point(a))) b = i;
+  // The first triangle: vertex 0, the next distinct one, the next not collinear with both.
+  uint32_t b = kNone, c = kNone;
+  for (uint32_t k = 1; k < count && b == kNone; ++k)
+    if (!samePoint(T.point(k), T.point(0))) b = k;
   if (b == kNone)
     return {Status::BadInput, "all " + std::to_string(count) + " input vertices coincide"};
-  for (uint32_t i : order)
-    if (c == kNone && orient2d(T.point(a), T.point(b), T.point(i)) != 0) c = i;
+  for (uint32_t k = b + 1; k < count && c == kNone; ++k)
+    if (orient2d(T.point(0), T.point(b), T.point(k)) != 0) c = k;
   if (c == kNone)
     return {Status::BadInput, "all " + std::to_string(count) +
                                   " input vertices are collinear: there is no triangle to make"};
-  T.init(a, b, c);
+  T.init(0, b, c);
 
-  uint32_t hint = T.vertexEdge[a] / 3, done = 0;
-  for (uint32_t v : order) {
-    if (v == a || v == b || v == c) continue;
-    if ((++done & 0xFFFF) == 0 && budget.stop())
+  uint32_t hint = T.vertexEdge[0] / 3;
+  for (uint32_t v = 1; v < count; ++v) {
+    if (v == b || v == c) continue;
+    if ((v & 0xFFFF) == 0 && budget.stop())
       return {budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
               "stopped while triangulating the input vertices"};
     uint32_t r = T.insert(v, hint);
-    if (r == kNone) return {Status::BadInput, "could not locate vertex " + std::to_string(v)};
-    canonical[v] = r;
+    if (r == kNone) return {Status::BadInput, "could not locate vertex " + std::to_string(inputOf[v])};
+    canonical[inputOf[v]] = r;
     hint = T.vertexEdge[r] / 3;
   }
   return {};

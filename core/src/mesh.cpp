@@ -35,18 +35,14 @@ std::string checkInput(const Pslg& in) {
   return {};
 }
 
-double cornerAngle(const double* a, const double* b, const double* c) {
-  double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
-  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180.0 / M_PI);
-}
-
 // Copies the domain's triangles out, keeping input vertices at their indices and numbering
 // the Steiner points that are used after them.
-void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside, uint32_t inputCount,
-                 Mesh& mesh) {
+void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
+                 const std::vector<uint32_t>& inputOf, Mesh& mesh) {
   uint32_t slots = T.triangleSlots(), total = T.vertexCount();
+  uint32_t inputCount = uint32_t(inputOf.size());
   std::vector<uint32_t> index(total, kNone);
-  for (uint32_t v = 0; v < inputCount; ++v) index[v] = v;
+  for (uint32_t v = 0; v < inputCount; ++v) index[v] = inputOf[v];
   uint32_t nextIndex = inputCount, triangles = 0;
   std::vector<uint8_t> used(total, 0);
   for (uint32_t t = 0; t < slots; ++t) {
@@ -65,7 +61,7 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside, uin
     mesh.points[2 * size_t(index[v])] = T.pts[2 * size_t(v)];
     mesh.points[2 * size_t(index[v]) + 1] = T.pts[2 * size_t(v) + 1];
     if (v < inputCount)
-      mesh.vertexKind[v] = used[v] ? kInputVertex : kUnusedVertex;
+      mesh.vertexKind[index[v]] = used[v] ? kInputVertex : kUnusedVertex;
     else
       mesh.vertexKind[index[v]] = kSegmentVertex;
   }
@@ -86,26 +82,42 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside, uin
   }
 }
 
+// Smallest and largest angle in floating point (via cosines: the smallest angle is opposite
+// the shortest edge, the largest opposite the longest), and the exact count of triangles with
+// a right or obtuse corner (dot-product signs).
 void measureAngles(const Mesh& mesh, Stats& stats) {
-  double lo = 180, hi = 0;
+  double cosSmallest = -1, cosLargest = 1;  // of the smallest and the largest angle seen
   uint32_t nonAcute = 0, obtuse = 0;
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
     const double* p[3];
     for (int k = 0; k < 3; ++k) p[k] = &mesh.points[2 * size_t(mesh.triangles[3 * t + k])];
+    double len2[3];  // squared length of the edge opposite corner k
     bool right = false, blunt = false;
     for (int k = 0; k < 3; ++k) {
       const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
-      double angle = cornerAngle(a, b, c);
-      lo = std::min(lo, angle), hi = std::max(hi, angle);
+      len2[k] = (b[0] - c[0]) * (b[0] - c[0]) + (b[1] - c[1]) * (b[1] - c[1]);
       double d = dot2d(a, b, c);
       right |= d <= 0;
       blunt |= d < 0;
     }
     nonAcute += right;
     obtuse += blunt;
+    int lo = 0, hi = 0;
+    for (int k = 1; k < 3; ++k) {
+      if (len2[k] < len2[lo]) lo = k;
+      if (len2[k] > len2[hi]) hi = k;
+    }
+    auto cosAt = [&](int k) {
+      const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+      double dot = (b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1]);
+      return dot / std::sqrt(len2[(k + 1) % 3] * len2[(k + 2) % 3]);
+    };
+    cosSmallest = std::max(cosSmallest, cosAt(lo));
+    cosLargest = std::min(cosLargest, cosAt(hi));
   }
-  stats.minAngle = mesh.triangleCount() ? lo : 0;
-  stats.maxAngle = mesh.triangleCount() ? hi : 0;
+  auto degrees = [](double c) { return std::acos(std::max(-1.0, std::min(1.0, c))) * (180.0 / M_PI); };
+  stats.minAngle = mesh.triangleCount() ? degrees(cosSmallest) : 0;
+  stats.maxAngle = mesh.triangleCount() ? degrees(cosLargest) : 0;
   stats.nonAcute = nonAcute;
   stats.obtuse = obtuse;
 }
@@ -148,17 +160,15 @@ Result mesh(const Pslg& input, const Options& options) {
   Triangulation T;
   uint32_t n = uint32_t(input.vertexCount());
   T.trackSegments = constrained;
-  T.pts = input.points;
-  T.vertexEdge.assign(n, kNone);
   // Each vertex makes about two triangles; reserving avoids regrowth copies.
   T.tri.reserve(6 * size_t(n) + 12);
   T.opp.reserve(6 * size_t(n) + 12);
   T.fixed.reserve(6 * size_t(n) + 12);
 
-  std::vector<uint32_t> canonical;
-  StepResult step = detail::buildDelaunay(T, n, canonical, budget);
+  std::vector<uint32_t> canonical, inputOf;
+  StepResult step = detail::buildDelaunay(T, input.points, canonical, inputOf, budget);
   if (!step.ok()) return fail(step.status, step.message);
-  for (uint32_t i = 0; i < n; ++i) stats.duplicates += canonical[i] != i;
+  for (uint32_t i = 0; i < n; ++i) stats.duplicates += inputOf[canonical[i]] != i;
   if (stats.duplicates)
     stats.warnings.push_back(std::to_string(stats.duplicates) +
                              " duplicate vertices merged into earlier equal ones");
@@ -175,7 +185,7 @@ Result mesh(const Pslg& input, const Options& options) {
       T, constrained ? input : Pslg{}, domainOptions, keepHull);
   endPhase("domain");
 
-  extractMesh(T, inside, n, result.mesh);
+  extractMesh(T, inside, inputOf, result.mesh);
   stats.vertices = uint32_t(result.mesh.vertexCount());
   stats.triangles = uint32_t(result.mesh.triangleCount());
   stats.segments = uint32_t(result.mesh.segments.size() / 2);

@@ -25,11 +25,10 @@ struct Built {
 Built buildCdt(const Pslg& in) {
   Built b;
   b.T.trackSegments = true;
-  b.T.pts = in.points;
-  b.T.vertexEdge.assign(in.vertexCount(), kNone);
   Options options;
   Budget budget(options);
-  b.result = buildDelaunay(b.T, uint32_t(in.vertexCount()), b.canonical, budget);
+  std::vector<uint32_t> inputOf;
+  b.result = buildDelaunay(b.T, in.points, b.canonical, inputOf, budget);
   if (b.result.ok()) b.result = insertSegments(b.T, in, b.canonical, b.stats, budget);
   return b;
 }
@@ -162,8 +161,8 @@ TEST(Cdt, OverlapsVerticesOnSegmentsAndZeroLength) {
   EXPECT_NE(b.stats.warnings[0].find("zero length"), std::string::npos);
   // Vertex 4 (x=3) and 2 (x=5) split the axis segment; (7,0) is the only new vertex.
   EXPECT_EQ(b.T.vertexCount(), 9u);
-  EXPECT_EQ(b.T.pts[16], 7.0);
-  EXPECT_EQ(b.T.pts[17], 0.0);
+  EXPECT_EQ(b.T.point(8)[0], 7.0);
+  EXPECT_EQ(b.T.point(8)[1], 0.0);
 }
 
 TEST(Cdt, WindingAddsUpOnOverlappingSegments) {
@@ -172,7 +171,7 @@ TEST(Cdt, WindingAddsUpOnOverlappingSegments) {
   in.segments = {0, 1, 1, 2, 2, 3, 3, 0, 0, 1};  // edge 0->1 twice
   Built b = buildCdt(in);
   expectValidCdt(in, b);
-  uint32_t e = b.T.findEdge(0, 1);
+  uint32_t e = b.T.findEdge(b.canonical[0], b.canonical[1]);
   ASSERT_NE(e, kNone);
   EXPECT_EQ(b.T.wind[e], 2);
   EXPECT_EQ(b.T.wind[b.T.opp[e]], -2);

@@ -68,15 +68,14 @@ size_t realTriangles(const Triangulation& T) {
   return n;
 }
 
+// Builds the Delaunay triangulation of pts; canonical[i] is input vertex i's vertex in T.
 Triangulation build(const std::vector<double>& pts, std::vector<uint32_t>* canonical = nullptr,
                     StepResult* result = nullptr) {
   Triangulation T;
-  T.pts = pts;
-  T.vertexEdge.assign(pts.size() / 2, kNone);
-  std::vector<uint32_t> local;
+  std::vector<uint32_t> local, inputOf;
   Options options;
   Budget budget(options);
-  StepResult r = buildDelaunay(T, uint32_t(pts.size() / 2), canonical ? *canonical : local, budget);
+  StepResult r = buildDelaunay(T, pts, canonical ? *canonical : local, inputOf, budget);
   if (result) *result = r;
   return T;
 }
@@ -150,11 +149,12 @@ TEST(Triangulation, DegenerateInputsAreErrors) {
 }
 
 TEST(Triangulation, LocateReportsVertexEdgeAndTriangle) {
-  Triangulation T = build({0, 0, 4, 0, 0, 4, 4, 4});
+  std::vector<uint32_t> canonical;
+  Triangulation T = build({0, 0, 4, 0, 0, 4, 4, 4}, &canonical);
   double onVertex[2] = {4, 0}, onEdge[2] = {2, 0}, inside[2] = {1, 2}, outside[2] = {9, 1};
   Location l = T.locate(onVertex, 0);
   EXPECT_EQ(l.where, Where::OnVertex);
-  EXPECT_EQ(l.vertex, 1u);
+  EXPECT_EQ(l.vertex, canonical[1]);
   l = T.locate(onEdge, 0);
   ASSERT_EQ(l.where, Where::OnEdge);
   EXPECT_EQ(orient2d(T.point(T.tri[l.edge]), T.point(T.tri[next(l.edge)]), onEdge), 0);
@@ -165,8 +165,7 @@ TEST(Triangulation, LocateReportsVertexEdgeAndTriangle) {
 }
 
 TEST(Triangulation, RemoveVertexKeepsDelaunay) {
-  std::vector<double> pts = randomPoints(300, 7);
-  Triangulation T = build(pts);
+  Triangulation T = build(randomPoints(300, 7));
   std::mt19937 rng(3);
   size_t removed = 0;
   for (int attempt = 0; attempt < 200; ++attempt) {
@@ -186,13 +185,14 @@ TEST(Triangulation, RemoveVertexKeepsDelaunay) {
 }
 
 TEST(Triangulation, RemoveVertexRefusesFixedAndHullVertices) {
-  Triangulation T = build({0, 0, 4, 0, 4, 4, 0, 4, 2, 2, 1, 2});
-  EXPECT_FALSE(T.removeVertex(0));  // on the hull
-  uint32_t e = T.findEdge(4, 5);
+  std::vector<uint32_t> v;
+  Triangulation T = build({0, 0, 4, 0, 4, 4, 0, 4, 2, 2, 1, 2}, &v);
+  EXPECT_FALSE(T.removeVertex(v[0]));  // on the hull
+  uint32_t e = T.findEdge(v[4], v[5]);
   ASSERT_NE(e, kNone);
   T.fixEdge(e, 1);
-  EXPECT_FALSE(T.removeVertex(4));
+  EXPECT_FALSE(T.removeVertex(v[4]));
   T.unfixEdge(e);
-  EXPECT_TRUE(T.removeVertex(4));
+  EXPECT_TRUE(T.removeVertex(v[4]));
   EXPECT_EQ(checkStore(T), "");
 }
