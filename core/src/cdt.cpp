@@ -57,13 +57,13 @@ uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) con
       *collinear = true;
       return e;
     }
-    if (w != kGhost && x != kGhost) {
+    if (w != kGhost) {
       double ow = orient2d(P(u), P(w), P(v));
-      if (ow == 0 && dot2d(P(u), P(w), P(v)) > 0) {
+      if (ow == 0 && dot2d(P(u), P(w), P(v)) > 0) {  // w on the segment (a hull edge, maybe)
         *collinear = true;
         return e;
       }
-      if (ow > 0 && orient2d(P(u), P(x), P(v)) < 0) {
+      if (x != kGhost && ow > 0 && orient2d(P(u), P(x), P(v)) < 0) {
         *collinear = false;
         return next(e);
       }

@@ -176,3 +176,15 @@ TEST(Cdt, WindingAddsUpOnOverlappingSegments) {
   EXPECT_EQ(b.T.wind[e], 2);
   EXPECT_EQ(b.T.wind[b.T.opp[e]], -2);
 }
+
+// Found on mirrored CG:SHOP point sets: a segment along the hull through a collinear hull
+// vertex, whose outgoing half-edge lies in a ghost triangle, was not recognised.
+TEST(Cdt, SegmentAlongHullThroughCollinearVertex) {
+  for (bool reversed : {false, true}) {
+    Pslg in;
+    in.points = {0, 0, 0, 1, 0, 2, 1, 1, 0, 3};
+    in.segments = reversed ? std::vector<uint32_t>{4, 0} : std::vector<uint32_t>{0, 4};
+    Built b = buildCdt(in);
+    expectValidCdt(in, b);
+  }
+}
