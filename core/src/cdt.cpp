@@ -46,6 +46,7 @@ class SegmentInserter {
   const std::vector<uint32_t>& canonical_;
   const Budget& budget_;
   std::vector<Piece> todo_;
+  std::vector<std::pair<uint32_t, uint32_t>> created_;
   uint64_t crossings_ = 0;
 };
 
@@ -129,22 +130,29 @@ bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
 // then restores the Delaunay property around the new edges.
 bool SegmentInserter::flipAway(uint32_t u, uint32_t end, const Piece& piece,
                                std::vector<uint32_t>& crossedEdges) {
-  std::deque<std::pair<uint32_t, uint32_t>> queue;
-  for (uint32_t e : crossedEdges) queue.emplace_back(T_.tri[e], T_.tri[next(e)]);
-  std::vector<std::pair<uint32_t, uint32_t>> created;
+  // Queue entries remember their half-edge; flips elsewhere usually leave it valid, so the
+  // search around w runs only when it went stale.
+  struct Crossed {
+    uint32_t w, x, e;
+  };
+  std::deque<Crossed> queue;
+  for (uint32_t e : crossedEdges) queue.push_back({T_.tri[e], T_.tri[next(e)], e});
+  std::vector<std::pair<uint32_t, uint32_t>>& created = created_;
+  created.clear();
   while (!queue.empty()) {
-    auto [w, x] = queue.front();
+    auto [w, x, e] = queue.front();
     queue.pop_front();
-    uint32_t e = T_.findEdge(w, x);
+    if (T_.isFree(e / 3) || T_.tri[e] != w || T_.tri[next(e)] != x) e = T_.findEdge(w, x);
     uint32_t c = T_.tri[prev(e)], d = T_.tri[prev(T_.opp[e])];
     if (orient2d(P(c), P(w), P(d)) <= 0 || orient2d(P(d), P(x), P(c)) <= 0) {
-      queue.emplace_back(w, x);
+      queue.push_back({w, x, e});
       continue;
     }
+    uint32_t t1 = T_.opp[e] / 3;
     T_.flip(e);
     double oc = orient2d(P(u), P(end), P(c)), od = orient2d(P(u), P(end), P(d));
     if ((oc > 0 && od < 0) || (oc < 0 && od > 0))
-      queue.emplace_back(c, d);
+      queue.push_back({c, d, 3 * t1 + 2});  // the new diagonal c->d
     else
       created.emplace_back(c, d);
   }

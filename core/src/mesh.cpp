@@ -85,12 +85,16 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
 // Smallest and largest angle in floating point (via cosines: the smallest angle is opposite
 // the shortest edge, the largest opposite the longest), and the exact count of triangles with
 // a right or obtuse corner (dot-product signs).
-void measureAngles(const Mesh& mesh, Stats& stats) {
+// Runs on the store (vertices in insertion order) rather than on the output, whose input
+// numbering scatters neighbours across memory.
+void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, Stats& stats) {
   double cosSmallest = -1, cosLargest = 1;  // of the smallest and the largest angle seen
-  uint32_t nonAcute = 0, obtuse = 0;
-  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+  uint32_t nonAcute = 0, obtuse = 0, count = 0;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
+    if (!inside[t]) continue;
+    ++count;
     const double* p[3];
-    for (int k = 0; k < 3; ++k) p[k] = &mesh.points[2 * size_t(mesh.triangles[3 * t + k])];
+    for (int k = 0; k < 3; ++k) p[k] = T.point(T.tri[3 * t + k]);
     double len2[3];  // squared length of the edge opposite corner k
     bool right = false, blunt = false;
     for (int k = 0; k < 3; ++k) {
@@ -116,8 +120,8 @@ void measureAngles(const Mesh& mesh, Stats& stats) {
     cosLargest = std::min(cosLargest, cosAt(hi));
   }
   auto degrees = [](double c) { return std::acos(std::max(-1.0, std::min(1.0, c))) * (180.0 / M_PI); };
-  stats.minAngle = mesh.triangleCount() ? degrees(cosSmallest) : 0;
-  stats.maxAngle = mesh.triangleCount() ? degrees(cosLargest) : 0;
+  stats.minAngle = count ? degrees(cosSmallest) : 0;
+  stats.maxAngle = count ? degrees(cosLargest) : 0;
   stats.nonAcute = nonAcute;
   stats.obtuse = obtuse;
 }
@@ -192,7 +196,7 @@ Result mesh(const Pslg& input, const Options& options) {
   stats.steiner = stats.vertices - n;
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
-  measureAngles(result.mesh, stats);
+  measureAngles(T, inside, stats);
   endPhase("output");
   stats.seconds = budget.elapsed();
   return result;

@@ -84,6 +84,7 @@ Location Triangulation::locate(const double* p, uint32_t hint) const {
   // terminates with probability 1 because the exit edge is tried from a random start. The
   // step cap only guards against bugs elsewhere: it falls back to a scan.
   uint64_t maxSteps = 4ull * slots + 64;
+  uint32_t entered = kNone;  // the half-edge we came in through: p is known to be inside it
   for (uint64_t step = 0; step < maxSteps; ++step) {
     if (isGhost(t)) return {Where::InTriangle, t, kNone, kNone};
     rng_ ^= rng_ << 13;
@@ -94,9 +95,11 @@ Location Triangulation::locate(const double* p, uint32_t hint) const {
     bool moved = false;
     for (uint32_t i = 0; i < 3; ++i) {
       uint32_t e = 3 * t + (start + i) % 3;
+      if (e == entered) continue;
       double o = orient2d(point(tri[e]), point(tri[next(e)]), p);
       if (o < 0) {
-        t = opp[e] / 3;
+        entered = opp[e];
+        t = entered / 3;
         moved = true;
         break;
       }

@@ -310,3 +310,26 @@ TEST(Mesh, ZeroLengthSegmentWarns) {
   ASSERT_FALSE(r.stats.warnings.empty());
   EXPECT_NE(r.stats.warnings[0].find("segment 3 has zero length"), std::string::npos);
 }
+
+// Random PSLGs on a small lattice: many collinear overlaps, vertices on segments, crossings
+// through vertices and through each other, duplicates.
+TEST(Mesh, RandomDegenerateLatticePslgs) {
+  std::mt19937_64 rng(21);
+  for (int round = 0; round < 300; ++round) {
+    Pslg in;
+    int n = 6 + int(rng() % 30), grid = 3 + int(rng() % 8);
+    for (int i = 0; i < n; ++i)
+      in.points.push_back(double(rng() % grid)), in.points.push_back(double(rng() % grid));
+    in.points.insert(in.points.end(), {-1, -1, double(grid), -1, 0, double(grid)});
+    int segments = int(rng() % 25);
+    for (int s = 0; s < segments; ++s)
+      in.segments.push_back(uint32_t(rng() % n)), in.segments.push_back(uint32_t(rng() % n));
+    for (FillRule fill : {FillRule::Triangle, FillRule::EvenOdd, FillRule::NonZero}) {
+      Options options;
+      options.fill = fill;
+      options.convexHull = round % 2;
+      expectValid(in, options, mesh(in, options), "round " + std::to_string(round));
+      if (HasFailure()) return;
+    }
+  }
+}
