@@ -51,13 +51,15 @@ class SegmentInserter {
 };
 
 uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) const {
+  // Most segments of real inputs are already edges: look for that before any geometry.
+  uint32_t existing = T_.findEdge(u, v);
+  if (existing != kNone) {
+    *collinear = true;
+    return existing;
+  }
   uint32_t e0 = T_.vertexEdge[u], e = e0;
   do {
     uint32_t w = T_.tri[next(e)], x = T_.tri[prev(e)];
-    if (w == v) {
-      *collinear = true;
-      return e;
-    }
     if (w != kGhost) {
       double ow = orient2d(P(u), P(w), P(v));
       if (ow == 0 && dot2d(P(u), P(w), P(v)) > 0) {  // w on the segment (a hull edge, maybe)
