@@ -1,5 +1,6 @@
 // mesh(): the one entry point. Input checks, then the construction steps of build.h in order,
 // then the output mesh and its figures.
+#include <algorithm>
 #include <cmath>
 
 #include "acutemesh/acutemesh.h"
@@ -38,13 +39,14 @@ std::string checkInput(const Pslg& in) {
 // Copies the domain's triangles out, keeping input vertices at their indices and numbering
 // the Steiner points that are used after them.
 void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
-                 const std::vector<uint32_t>& inputOf, Mesh& mesh) {
+                 const Pslg& input, const std::vector<uint32_t>& inputOf, Mesh& mesh) {
   uint32_t slots = T.triangleSlots(), total = T.vertexCount();
   uint32_t inputCount = uint32_t(inputOf.size());
+  // index: store vertex -> output vertex. Input vertices keep their input index.
   std::vector<uint32_t> index(total, kNone);
-  for (uint32_t v = 0; v < inputCount; ++v) index[v] = inputOf[v];
-  uint32_t nextIndex = inputCount, triangles = 0;
+  std::copy(inputOf.begin(), inputOf.end(), index.begin());
   std::vector<uint8_t> used(total, 0);
+  uint32_t nextIndex = inputCount, triangles = 0;
   for (uint32_t t = 0; t < slots; ++t) {
     if (!inside[t]) continue;
     ++triangles;
@@ -54,25 +56,24 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
       if (index[v] == kNone) index[v] = nextIndex++;
     }
   }
-  mesh.points.assign(2 * size_t(nextIndex), 0.0);
-  mesh.vertexKind.assign(nextIndex, kInputVertex);
-  for (uint32_t v = 0; v < total; ++v) {
+  // Input coordinates are copied as they came (the store holds the same values, reordered).
+  mesh.points.resize(2 * size_t(nextIndex));
+  std::copy(input.points.begin(), input.points.end(), mesh.points.begin());
+  mesh.vertexKind.assign(nextIndex, kSegmentVertex);
+  for (uint32_t v = 0; v < inputCount; ++v)
+    mesh.vertexKind[index[v]] = used[v] ? kInputVertex : kUnusedVertex;
+  for (uint32_t v = inputCount; v < total; ++v) {
     if (index[v] == kNone) continue;
     mesh.points[2 * size_t(index[v])] = T.pts[2 * size_t(v)];
     mesh.points[2 * size_t(index[v]) + 1] = T.pts[2 * size_t(v) + 1];
-    if (v < inputCount)
-      mesh.vertexKind[index[v]] = used[v] ? kInputVertex : kUnusedVertex;
-    else
-      mesh.vertexKind[index[v]] = kSegmentVertex;
   }
-  mesh.triangles.clear();
-  mesh.triangles.reserve(3 * size_t(triangles));
+  mesh.triangles.resize(3 * size_t(triangles));
   mesh.segments.clear();
+  uint32_t* out = mesh.triangles.data();
   for (uint32_t t = 0; t < slots; ++t) {
     if (!inside[t]) continue;
-    for (int k = 0; k < 3; ++k) {
-      uint32_t e = 3 * t + k;
-      mesh.triangles.push_back(index[T.tri[e]]);
+    for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+      *out++ = index[T.tri[e]];
       // A fixed edge is reported once, from an inside triangle.
       if (T.fixed[e] && (!inside[T.opp[e] / 3] || e < T.opp[e])) {
         mesh.segments.push_back(index[T.tri[e]]);
@@ -164,10 +165,8 @@ Result mesh(const Pslg& input, const Options& options) {
   Triangulation T;
   uint32_t n = uint32_t(input.vertexCount());
   T.trackSegments = constrained;
-  // Each vertex makes about two triangles; reserving avoids regrowth copies.
-  T.tri.reserve(6 * size_t(n) + 12);
-  T.opp.reserve(6 * size_t(n) + 12);
-  T.fixed.reserve(6 * size_t(n) + 12);
+  // Each vertex makes about two triangles (ghosts included); sizing up front avoids regrowth.
+  T.reserveTriangles(2 * size_t(n) + 16);
 
   std::vector<uint32_t> canonical, inputOf;
   StepResult step = detail::buildDelaunay(T, input.points, canonical, inputOf, budget);
@@ -189,7 +188,7 @@ Result mesh(const Pslg& input, const Options& options) {
       T, constrained ? input : Pslg{}, domainOptions, keepHull);
   endPhase("domain");
 
-  extractMesh(T, inside, inputOf, result.mesh);
+  extractMesh(T, inside, input, inputOf, result.mesh);
   stats.vertices = uint32_t(result.mesh.vertexCount());
   stats.triangles = uint32_t(result.mesh.triangleCount());
   stats.segments = uint32_t(result.mesh.segments.size() / 2);

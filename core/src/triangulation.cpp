@@ -11,21 +11,25 @@ uint32_t Triangulation::addVertex(double x, double y) {
   return vertexCount() - 1;
 }
 
+void Triangulation::reserveTriangles(size_t count) {
+  if (3 * count <= tri.size()) return;
+  tri.resize(3 * count, kNone);
+  opp.resize(3 * count, kNone);
+  fixed.resize(3 * count, 0);
+  if (trackSegments) {
+    wind.resize(3 * count, 0);
+    segment.resize(3 * count, kNone);
+  }
+}
+
 uint32_t Triangulation::newTriangle() {
   if (!freeSlots_.empty()) {
     uint32_t t = freeSlots_.back();
     freeSlots_.pop_back();
     return t;
   }
-  uint32_t t = triangleSlots();
-  tri.resize(tri.size() + 3, kNone);
-  opp.resize(opp.size() + 3, kNone);
-  fixed.resize(fixed.size() + 3, 0);
-  if (trackSegments) {
-    wind.resize(wind.size() + 3, 0);
-    segment.resize(segment.size() + 3, kNone);
-  }
-  return t;
+  if (3 * size_t(slots_ + 1) > tri.size()) reserveTriangles(2 * size_t(slots_) + 16);
+  return slots_++;
 }
 
 void Triangulation::freeTriangle(uint32_t t) {

@@ -49,7 +49,10 @@ class Triangulation {
   std::vector<uint32_t> vertexEdge;  // per vertex: a half-edge leaving it, kNone if unused
 
   uint32_t vertexCount() const { return uint32_t(pts.size() / 2); }
-  uint32_t triangleSlots() const { return uint32_t(tri.size() / 3); }
+  // Slots in use or on the free list; the arrays may be longer (spare capacity, kNone).
+  uint32_t triangleSlots() const { return slots_; }
+  // Sizes the arrays for `count` triangle slots up front (one allocation instead of many).
+  void reserveTriangles(size_t count);
   const double* point(uint32_t v) const { return &pts[2 * size_t(v)]; }
   bool isGhost(uint32_t t) const {
     return tri[3 * t] == kGhost || tri[3 * t + 1] == kGhost || tri[3 * t + 2] == kGhost;
@@ -130,6 +133,7 @@ class Triangulation {
   // Inside-test of point p against triangle t, honouring ghosts.
   bool inCircumcircle(uint32_t t, uint32_t p) const;
 
+  uint32_t slots_ = 0;
   std::vector<uint32_t> freeSlots_;
   std::vector<uint32_t> scratch_;
   mutable uint32_t rng_ = 2463534242u;

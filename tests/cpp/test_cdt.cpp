@@ -36,7 +36,7 @@ Built buildCdt(const Pslg& in) {
 // Every non-fixed edge between two real triangles is locally Delaunay.
 size_t nonDelaunayEdges(const Triangulation& T) {
   size_t bad = 0;
-  for (uint32_t e = 0; e < T.tri.size(); ++e) {
+  for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e) {
     if (T.isFree(e / 3) || T.isGhost(e / 3) || T.isGhost(T.opp[e] / 3)) continue;
     bad += T.mustFlip(e);
   }
