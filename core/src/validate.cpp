@@ -1,1 +1,1016 @@
-// placeholder
+// validate(): invariant checks of an output mesh against its input (see acutemesh.h).
+//
+// Every decision is an exact predicate sign or an exact comparison of doubles. The one
+// allowance: a segment's chain may pass through a vertex a few hundred ulps off the segment
+// when a listed segment edge leads there, since crossing and split points are rounded
+// constructions (see walkSegment). The work is O(n log n): per-vertex sorted half-edge lists
+// give twins and stars, a hash table matches coordinates, uniform grids over the few points
+// that need locating (unused vertices and hole points; boundary vertices where a segment
+// leaves the domain) replace all-pairs tests, and winding numbers are propagated across
+// edges, with one ray cast per connected piece of the mesh.
+#include <acutemesh/acutemesh.h>
+#include <acutemesh/predicates.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+namespace acutemesh {
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+constexpr size_t kMaxErrors = 20;
+constexpr double kRoundingUlps = 1024;
+
+// Collects the first kMaxErrors messages; formats nothing once full, so a badly broken mesh
+// costs no more than a good one.
+class ErrorLog {
+ public:
+  explicit ErrorLog(Validation& out) : out_(out) {}
+  template <class... Parts>
+  void add(const Parts&... parts) {
+    out_.ok = false;
+    if (out_.errors.size() >= kMaxErrors) {
+      ++dropped_;
+      return;
+    }
+    std::ostringstream s;
+    (s << ... << parts);
+    out_.errors.push_back(s.str());
+  }
+  void finish() {
+    if (dropped_ > 0) out_.errors.push_back("... and " + std::to_string(dropped_) + " more");
+  }
+
+ private:
+  Validation& out_;
+  size_t dropped_ = 0;
+};
+
+// The shortest decimal that reads back as exactly x.
+std::string exact(double x) {
+  char buf[32];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    if (std::strtod(buf, nullptr) == x) break;
+  }
+  return buf;
+}
+
+// "(x, y)", exactly.
+struct Xy {
+  const double* p;
+};
+std::ostream& operator<<(std::ostream& s, Xy q) {
+  return s << '(' << exact(q.p[0]) << ", " << exact(q.p[1]) << ')';
+}
+
+// "triangle 17 (4,9,12)"
+struct Tri {
+  size_t t;
+  const uint32_t* v;
+};
+std::ostream& operator<<(std::ostream& s, Tri t) {
+  return s << "triangle " << t.t << " (" << t.v[0] << ',' << t.v[1] << ',' << t.v[2] << ')';
+}
+
+bool finite(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]); }
+
+// Open-addressing table from exact coordinates to the first vertex stored with them. Each
+// slot keeps 32 bits of the hash beside the vertex, so probing rarely touches coordinates.
+class CoordTable {
+ public:
+  CoordTable(const double* xy, size_t count) : xy_(xy) {
+    size_t size = 16;
+    while (size < 2 * count) size <<= 1;
+    slots_.assign(size, kEmpty);
+  }
+  // The vertex already stored with v's coordinates, or v after storing it.
+  uint32_t insert(uint32_t v) {
+    const double* p = xy_ + 2 * size_t(v);
+    uint64_t h = hash(p);
+    size_t i = probe(h, p);
+    if (slots_[i] == kEmpty) slots_[i] = (h & ~uint64_t(kNone)) | v;
+    return uint32_t(slots_[i]);
+  }
+  uint32_t find(const double* p) const { return uint32_t(slots_[probe(hash(p), p)]); }
+
+ private:
+  static constexpr uint64_t kEmpty = ~uint64_t(0);
+  // The slot holding p's coordinates, or the empty slot where they would go.
+  size_t probe(uint64_t h, const double* p) const {
+    size_t mask = slots_.size() - 1;
+    for (size_t i = size_t(h) & mask;; i = (i + 1) & mask) {
+      uint64_t s = slots_[i];
+      if (s == kEmpty) return i;
+      const double* q = xy_ + 2 * size_t(uint32_t(s));
+      if ((s >> 32) == (h >> 32) && q[0] == p[0] && q[1] == p[1]) return i;
+    }
+  }
+  static uint64_t mix(uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  static uint64_t hash(const double* p) {
+    double x = p[0] + 0.0, y = p[1] + 0.0;  // -0.0 + 0.0 == +0.0: equal values, equal bits
+    uint64_t a, b;
+    std::memcpy(&a, &x, 8);
+    std::memcpy(&b, &y, 8);
+    return mix(a ^ mix(b));
+  }
+  const double* xy_;
+  std::vector<uint64_t> slots_;
+};
+
+// A point to locate among the triangles.
+struct Query {
+  enum Kind : uint8_t { Unused, Boundary, Hole } kind;
+  uint32_t id;  // vertex index, or hole index
+  double xy[2];
+};
+
+// Uniform grid over the query points. forEachNear() visits a superset of the points in the
+// closed convex hull of a few given points (a triangle, or a box around a segment), touching
+// only the grid cells the shape can reach (row by row for a big shape).
+class QueryGrid {
+ public:
+  explicit QueryGrid(std::vector<Query> queries) : q_(std::move(queries)) {
+    if (q_.empty()) return;
+    lo_[0] = hi_[0] = q_[0].xy[0];
+    lo_[1] = hi_[1] = q_[0].xy[1];
+    for (const Query& q : q_)
+      for (int k = 0; k < 2; ++k)
+        lo_[k] = std::min(lo_[k], q.xy[k]), hi_[k] = std::max(hi_[k], q.xy[k]);
+    double w = hi_[0] - lo_[0], h = hi_[1] - lo_[1], cells = double(q_.size());
+    if (w > 0 && h > 0) {
+      nx_ = int(std::clamp(std::sqrt(cells * w / h), 1.0, cells));
+      ny_ = int(std::clamp(cells / nx_, 1.0, cells));
+    } else {
+      nx_ = w > 0 ? int(cells) : 1;
+      ny_ = h > 0 ? int(cells) : 1;
+    }
+    step_[0] = w > 0 ? w / nx_ : 0;
+    step_[1] = h > 0 ? h / ny_ : 0;
+    scale_[0] = w > 0 ? nx_ / w : 0;
+    scale_[1] = h > 0 ? ny_ / h : 0;
+    start_.assign(size_t(nx_) * ny_ + 1, 0);
+    for (const Query& q : q_) ++start_[cellOf(q) + 1];
+    for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    order_.resize(q_.size());
+    std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
+    for (uint32_t i = 0; i < q_.size(); ++i) order_[fill[cellOf(q_[i])]++] = i;
+  }
+
+  const std::vector<Query>& queries() const { return q_; }
+
+  template <class F>
+  void forEachNear(const double* const* pts, int count, F&& visit) const {
+    if (q_.empty()) return;
+    double box[2][2];  // [axis][min, max]
+    for (int k = 0; k < 2; ++k) {
+      box[k][0] = box[k][1] = pts[0][k];
+      for (int i = 1; i < count; ++i)
+        box[k][0] = std::min(box[k][0], pts[i][k]), box[k][1] = std::max(box[k][1], pts[i][k]);
+      if (box[k][1] < lo_[k] || box[k][0] > hi_[k]) return;
+    }
+    int i0 = cell(0, box[0][0]), i1 = cell(0, box[0][1]);
+    int j0 = cell(1, box[1][0]), j1 = cell(1, box[1][1]);
+    if (j0 == j1 || (i1 - i0 + 1) * (j1 - j0 + 1) <= 16) {
+      for (int j = j0; j <= j1; ++j) visitRow(j, i0, i1, box, visit);
+      return;
+    }
+    // Big shape: per row, only the cells under the shape's x-extent within that row (widened
+    // by half a row and a cell each way, which covers any rounding of these float bounds).
+    double slack = 1e-9 * (std::fabs(box[0][0]) + std::fabs(box[0][1]) + std::fabs(box[1][0]) +
+                           std::fabs(box[1][1]));
+    for (int j = j0; j <= j1; ++j) {
+      double ya = lo_[1] + (j - 0.5) * step_[1] - slack, yb = lo_[1] + (j + 1.5) * step_[1] + slack;
+      double xa, xb;
+      if (!xExtentInStrip(pts, count, ya, yb, xa, xb)) continue;
+      int ia = std::max(i0, cell(0, xa - slack) - 1), ib = std::min(i1, cell(0, xb + slack) + 1);
+      visitRow(j, ia, ib, box, visit);
+    }
+  }
+
+ private:
+  // Monotone in x, so a point inside [a, b] lands in a cell between a's and b's.
+  int cell(int axis, double x) const {
+    double f = (x - lo_[axis]) * scale_[axis];
+    int n = axis == 0 ? nx_ : ny_;
+    if (!(f > 0)) return 0;
+    if (f >= n) return n - 1;
+    return int(f);
+  }
+  size_t cellOf(const Query& q) const { return size_t(cell(1, q.xy[1])) * nx_ + cell(0, q.xy[0]); }
+
+  template <class F>
+  void visitRow(int j, int i0, int i1, const double box[2][2], F& visit) const {
+    for (int i = i0; i <= i1; ++i) {
+      size_t c = size_t(j) * nx_ + i;
+      for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+        const Query& q = q_[order_[k]];
+        if (q.xy[0] >= box[0][0] && q.xy[0] <= box[0][1] && q.xy[1] >= box[1][0] &&
+            q.xy[1] <= box[1][1])
+          visit(q);
+      }
+    }
+  }
+
+  // x-extent of the convex hull of pts within ya <= y <= yb (approximate: callers widen it).
+  // Any order of the points will do.
+  static bool xExtentInStrip(const double* const* pts, int count, double ya, double yb, double& xa,
+                             double& xb) {
+    xa = std::numeric_limits<double>::infinity();
+    xb = -xa;
+    auto take = [&](double x) { xa = std::min(xa, x), xb = std::max(xb, x); };
+    for (int i = 0; i < count; ++i) {
+      const double* p = pts[i];
+      if (p[1] >= ya && p[1] <= yb) take(p[0]);
+      for (int j = i + 1; j < count; ++j) {  // every pair: the hull's edges are among them
+        const double* q = pts[j];
+        for (double y : {ya, yb})
+          if ((p[1] < y && y < q[1]) || (q[1] < y && y < p[1]))
+            take(p[0] + (y - p[1]) * (q[0] - p[0]) / (q[1] - p[1]));
+      }
+    }
+    return xa <= xb;
+  }
+
+  std::vector<Query> q_;
+  std::vector<uint32_t> start_, order_;
+  double lo_[2] = {0, 0}, hi_[2] = {0, 0}, step_[2] = {0, 0}, scale_[2] = {0, 0};
+  int nx_ = 1, ny_ = 1;
+};
+
+// Winding numbers of points about the input segments (directed a->b): crossings of the +x ray,
+// decided by exact orientation with the half-open rule (a segment counts when
+// min y <= py < max y), found by a sweep in y over the segments spanning each point's y.
+std::vector<int64_t> windingNumbers(const Pslg& in, const std::vector<std::array<double, 2>>& pts) {
+  auto P = [&](uint32_t v) { return &in.points[2 * size_t(v)]; };
+  std::vector<uint32_t> segs, byY(pts.size());
+  for (uint32_t s = 0; s < in.segmentCount(); ++s)
+    if (P(in.segments[2 * s])[1] != P(in.segments[2 * s + 1])[1]) segs.push_back(s);
+  auto ymin = [&](uint32_t s) {
+    return std::min(P(in.segments[2 * s])[1], P(in.segments[2 * s + 1])[1]);
+  };
+  auto ymax = [&](uint32_t s) {
+    return std::max(P(in.segments[2 * s])[1], P(in.segments[2 * s + 1])[1]);
+  };
+  std::sort(segs.begin(), segs.end(), [&](uint32_t a, uint32_t b) { return ymin(a) < ymin(b); });
+  for (uint32_t i = 0; i < pts.size(); ++i) byY[i] = i;
+  std::sort(byY.begin(), byY.end(), [&](uint32_t a, uint32_t b) { return pts[a][1] < pts[b][1]; });
+
+  std::vector<int64_t> winding(pts.size(), 0);
+  std::vector<uint32_t> active;
+  size_t next = 0;
+  for (uint32_t i : byY) {
+    const double* p = pts[i].data();
+    while (next < segs.size() && ymin(segs[next]) <= p[1]) active.push_back(segs[next++]);
+    size_t kept = 0;
+    for (uint32_t s : active) {
+      if (ymax(s) <= p[1]) continue;
+      active[kept++] = s;
+      const double *a = P(in.segments[2 * s]), *b = P(in.segments[2 * s + 1]);
+      double o = orient2d(a, b, p);
+      if (a[1] < b[1] && o > 0) ++winding[i];
+      if (a[1] > b[1] && o < 0) --winding[i];
+    }
+    active.resize(kept);
+  }
+  return winding;
+}
+
+// Vertices on the boundary of the convex hull of the distinct points, counter-clockwise,
+// including those in the middle of a hull edge. Among equal points the used one is taken.
+std::vector<uint32_t> convexHull(const std::vector<double>& xy, const std::vector<uint8_t>& used) {
+  struct Point {
+    double xy[2];
+    bool unused;
+    uint32_t v;
+    bool operator<(const Point& o) const {
+      if (xy[0] != o.xy[0]) return xy[0] < o.xy[0];
+      if (xy[1] != o.xy[1]) return xy[1] < o.xy[1];
+      return unused != o.unused ? o.unused : v < o.v;  // the used copy of a point first
+    }
+  };
+  size_t n = xy.size() / 2;
+  if (n == 0) return {};
+  // Akl-Toussaint: drop the points strictly left of every edge of a closed polygon of input
+  // points (here: the extremes in 8 directions, counter-clockwise). Such a point has
+  // positive winding number, so it lies strictly inside the hull, whatever the rounding of
+  // the scores that picked the polygon.
+  auto at = [&](uint32_t v) { return &xy[2 * size_t(v)]; };
+  const double dir[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+  uint32_t ext[8] = {};
+  for (uint32_t v = 1; v < n; ++v)
+    for (int k = 0; k < 8; ++k)
+      if (dir[k][0] * at(v)[0] + dir[k][1] * at(v)[1] >
+          dir[k][0] * at(ext[k])[0] + dir[k][1] * at(ext[k])[1])
+        ext[k] = v;
+  std::vector<uint32_t> poly;
+  for (uint32_t v : ext)
+    if (poly.empty() || (v != poly.back() && v != poly.front())) poly.push_back(v);
+  std::vector<Point> pts;
+  for (uint32_t v = 0; v < n; ++v) {
+    bool inside = poly.size() >= 3;
+    for (size_t k = 0; k < poly.size() && inside; ++k)
+      inside = orient2d(at(poly[k]), at(poly[(k + 1) % poly.size()]), at(v)) > 0;
+    if (!inside) pts.push_back({{at(v)[0], at(v)[1]}, !used[v], v});
+  }
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end(),
+                        [](const Point& a, const Point& b) {
+                          return a.xy[0] == b.xy[0] && a.xy[1] == b.xy[1];
+                        }),
+            pts.end());
+  std::vector<uint32_t> hull;
+  if (pts.size() < 3) {
+    for (const Point& p : pts) hull.push_back(p.v);
+    return hull;
+  }
+  // Monotone chain that pops only on a right turn, so collinear boundary points stay.
+  std::vector<const Point*> chainPts;
+  auto chain = [&](auto first, auto last) {
+    size_t base = chainPts.size();
+    for (auto it = first; it != last; ++it) {
+      while (chainPts.size() >= base + 2 &&
+             orient2d(chainPts[chainPts.size() - 2]->xy, chainPts.back()->xy, it->xy) < 0)
+        chainPts.pop_back();
+      chainPts.push_back(&*it);
+    }
+    chainPts.pop_back();
+  };
+  chain(pts.begin(), pts.end());
+  chain(pts.rbegin(), pts.rend());
+  for (const Point* p : chainPts) hull.push_back(p->v);
+  return hull;
+}
+
+class Validator {
+ public:
+  Validator(const Pslg& in, const Mesh& m, const Options& opt, Validation& out)
+      : in_(in), m_(m), opt_(opt), log_(out) {}
+
+  void run() {
+    if (!checkSizes()) return log_.finish();
+    buildHalfEdges();
+    checkStars();
+    checkVertices();
+    grid_ = QueryGrid(makeQueries());
+    marked_.assign(3 * size_t(T_), 0);
+    segCount_.assign(3 * size_t(T_), 0);
+    onSegment_.assign(n_, kNone);
+    listed_.assign(3 * size_t(T_), 0);
+    if (opt_.mode != Mode::Delaunay) {
+      readMeshSegments();
+      for (uint32_t s = 0; s < in_.segmentCount(); ++s) walkSegment(s);
+      checkMeshSegments();
+    }
+    checkKinds();
+    checkBoundaryEdges();
+    bool rule = opt_.mode != Mode::Delaunay && opt_.fill != FillRule::Triangle;
+    if (rule && windingIsDefined()) checkWindings();
+    locateQueries();
+    log_.finish();
+  }
+
+ private:
+  // ---- helpers ----------------------------------------------------------------------------
+  const double* P(uint32_t v) const { return &m_.points[2 * size_t(v)]; }
+  const double* inP(uint32_t v) const { return &in_.points[2 * size_t(v)]; }
+  const uint32_t* corners(uint32_t t) const { return &m_.triangles[3 * size_t(t)]; }
+  Tri tri(uint32_t t) const { return {t, corners(t)}; }
+  static uint32_t nextHe(uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
+  static uint32_t prevHe(uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
+  uint32_t org(uint32_t h) const { return m_.triangles[h]; }
+  uint32_t dst(uint32_t h) const { return m_.triangles[nextHe(h)]; }
+  // One half-edge stands for each undirected edge: the smaller of a twin pair.
+  uint32_t canon(uint32_t h) const { return twin_[h] == kNone ? h : std::min(h, twin_[h]); }
+  // Input segments along h minus those against it (NonZero/EvenOdd bookkeeping).
+  int64_t along(uint32_t h) const { return canon(h) == h ? segCount_[h] : -segCount_[canon(h)]; }
+  // Calls f(h) for every half-edge h leaving v, turning counter-clockwise around v fan by
+  // fan: each open fan from its first (boundary) edge, else the one closed fan through any
+  // half-edge leaving v. (A second closed fan at v is a fold, reported by checkStars.)
+  template <class F>
+  void forEachOut(uint32_t v, F&& f) const {
+    auto fan = [&](uint32_t first) {
+      uint32_t h = first;
+      do {
+        f(h);
+        h = twin_[prevHe(h)];
+      } while (h != kNone && h != first);
+    };
+    if (fanOff_[v] == fanOff_[v + 1]) {
+      if (anyOut_[v] != kNone) fan(anyOut_[v]);
+    } else {
+      for (uint32_t k = fanOff_[v]; k < fanOff_[v + 1]; ++k) fan(fanStart_[k]);
+    }
+  }
+  // Calls f(neighbour, half-edge) for every mesh edge at v: the half-edges leaving v, and the
+  // boundary half-edges ending each open fan (their reverse is no half-edge).
+  template <class F>
+  void forEachEdge(uint32_t v, F&& f) const {
+    forEachOut(v, [&](uint32_t h) {
+      f(dst(h), h);
+      if (twin_[prevHe(h)] == kNone) f(org(prevHe(h)), prevHe(h));
+    });
+  }
+  // The mesh edge u-v (either direction), or kNone.
+  uint32_t meshEdge(uint32_t u, uint32_t v) const {
+    uint32_t found = kNone;
+    forEachEdge(u, [&](uint32_t w, uint32_t h) {
+      if (w == v) found = h;
+    });
+    return found;
+  }
+  // A triangle of v's star that the direction from v toward point d points into, or kNone.
+  // Each triangle (v, p, q) owns the half-open wedge of directions [p - v, q - v), so a
+  // direction along an edge belongs to exactly one triangle (when the star is valid).
+  uint32_t triangleToward(uint32_t v, const double* d) const {
+    uint32_t found = kNone;
+    forEachOut(v, [&](uint32_t h) {
+      if (found == kNone && orient2d(P(v), P(dst(h)), d) >= 0 &&
+          orient2d(P(v), d, P(org(prevHe(h)))) > 0)
+        found = h / 3;
+    });
+    return found;
+  }
+
+  // ---- 1. sizes, indices, finite coordinates, input vertices copied exactly ---------------
+  bool checkSizes() {
+    bool fatal = false;
+    auto bad = [&](auto&&... parts) {
+      log_.add(parts...);
+      fatal = true;
+    };
+    if (in_.points.size() % 2) bad("input points has odd length ", in_.points.size());
+    if (in_.segments.size() % 2) bad("input segments has odd length ", in_.segments.size());
+    if (in_.holes.size() % 2) bad("input holes has odd length ", in_.holes.size());
+    if (m_.points.size() % 2) bad("mesh points has odd length ", m_.points.size());
+    if (m_.triangles.size() % 3)
+      bad("mesh triangles has length ", m_.triangles.size(), ", not a multiple of 3");
+    if (m_.segments.size() % 2) bad("mesh segments has odd length ", m_.segments.size());
+    if (m_.points.size() / 2 >= kNone || m_.triangles.size() >= (size_t(1) << 31))
+      bad("mesh too large for 32-bit indices");
+    if (fatal) return false;
+    nIn_ = uint32_t(in_.vertexCount());
+    n_ = uint32_t(m_.vertexCount());
+    T_ = uint32_t(m_.triangleCount());
+    if (n_ < nIn_) bad("mesh has ", n_, " vertices, fewer than the ", nIn_, " input vertices");
+    if (!m_.vertexKind.empty() && m_.vertexKind.size() != n_)
+      bad("vertexKind has ", m_.vertexKind.size(), " entries for ", n_, " vertices");
+    for (uint32_t v = 0; v < nIn_; ++v)
+      if (!finite(inP(v))) bad("input vertex ", v, ' ', Xy{inP(v)}, " is not finite");
+    for (uint32_t v = 0; v < n_; ++v)
+      if (!finite(P(v))) bad("vertex ", v, ' ', Xy{P(v)}, " is not finite");
+    for (uint32_t s = 0; s < in_.segmentCount(); ++s)
+      for (int k = 0; k < 2; ++k)
+        if (in_.segments[2 * s + k] >= nIn_)
+          bad("input segment ", s, " (", in_.segments[2 * s], "->", in_.segments[2 * s + 1],
+              ") refers to vertex ", in_.segments[2 * s + k], ", but there are ", nIn_,
+              " input vertices");
+    for (uint32_t t = 0; t < T_; ++t)
+      for (int k = 0; k < 3; ++k)
+        if (corners(t)[k] >= n_)
+          bad(tri(t), " has index ", corners(t)[k], " out of range (", n_, " vertices)");
+    for (size_t s = 0; s < m_.segments.size(); ++s)
+      if (m_.segments[s] >= n_)
+        bad("mesh segment ", s / 2, " has index ", m_.segments[s], " out of range (", n_,
+            " vertices)");
+    if (fatal) return false;
+    for (uint32_t v = 0; v < nIn_; ++v)
+      if (!(P(v)[0] == inP(v)[0] && P(v)[1] == inP(v)[1]))
+        log_.add("mesh vertex ", v, ' ', Xy{P(v)}, " differs from input vertex ", v, ' ',
+                 Xy{inP(v)});
+    return true;
+  }
+
+  // ---- 2. orientation, half-edge structure, each directed edge at most once ----------------
+  // Also counts, per vertex, the triangles (v, p, q) whose wedge [p - v, q - v) holds the +x
+  // direction: with the triangle strictly CCW, that is exactly p.y <= v.y < q.y.
+  void buildHalfEdges() {
+    good_.assign(T_, 0);
+    cover_.assign(n_, 0);
+    anyOut_.assign(n_, kNone);
+    for (uint32_t t = 0; t < T_; ++t) {
+      const uint32_t* c = corners(t);
+      const double *a = P(c[0]), *b = P(c[1]), *d = P(c[2]);
+      if (!(orient2d(a, b, d) > 0)) {
+        log_.add(tri(t), " is not counter-clockwise");
+        continue;
+      }
+      good_[t] = 1;
+      double y[3] = {a[1], b[1], d[1]};
+      for (int k = 0; k < 3; ++k) {
+        cover_[c[k]] += y[(k + 1) % 3] <= y[k] && y[(k + 2) % 3] > y[k];
+        anyOut_[c[k]] = 3 * t + k;
+      }
+    }
+    findTwins();
+    // Open fans start at the boundary half-edges, grouped here by origin.
+    boundaryVertex_.assign(n_, 0);
+    fanOff_.assign(n_ + 1, 0);
+    for (uint32_t h : boundary_) {
+      boundaryVertex_[org(h)] = boundaryVertex_[dst(h)] = 1;
+      ++fanOff_[org(h) + 1];
+    }
+    for (uint32_t v = 0; v < n_; ++v) fanOff_[v + 1] += fanOff_[v];
+    fanStart_.resize(boundary_.size());
+    std::vector<uint32_t> fill(fanOff_.begin(), fanOff_.end() - 1);
+    for (uint32_t h : boundary_) fanStart_[fill[org(h)]++] = h;
+  }
+
+  // Twins, and each directed edge at most once. Half-edges are grouped by the smaller end of
+  // their edge, so a twin pair lands side by side once each (small) group is sorted: a count,
+  // a scatter and a scan, with no search.
+  void findTwins() {
+    std::vector<uint32_t> off(n_ + 1, 0);
+    for (uint32_t h = 0; h < 3 * T_; ++h)
+      if (good_[h / 3]) ++off[std::min(org(h), dst(h)) + 1];
+    for (uint32_t v = 0; v < n_; ++v) off[v + 1] += off[v];
+    // Entry: larger end << 32 | half-edge << 1 | whether the half-edge runs from the larger end.
+    std::vector<uint64_t> edges(off[n_]);
+    std::vector<uint32_t> fill(off.begin(), off.end() - 1);
+    for (uint32_t h = 0; h < 3 * T_; ++h) {
+      if (!good_[h / 3]) continue;
+      uint32_t u = org(h), v = dst(h);
+      edges[fill[std::min(u, v)]++] = uint64_t(std::max(u, v)) << 32 | uint64_t(h) << 1 | (u > v);
+    }
+    twin_.assign(3 * size_t(T_), kNone);
+    auto half = [](uint64_t e) { return uint32_t(e) >> 1; };
+    for (uint32_t v = 0; v < n_; ++v) {
+      auto first = edges.begin() + off[v], last = edges.begin() + off[v + 1];
+      std::sort(first, last);
+      for (auto run = first, end = first; run != last; run = end) {
+        while (end != last && *end >> 32 == *run >> 32) ++end;
+        if (end - run == 2 && (run[0] & 1) != (run[1] & 1)) {
+          twin_[half(run[0])] = half(run[1]);
+          twin_[half(run[1])] = half(run[0]);
+          continue;
+        }
+        for (auto e = run; e != end; ++e) boundary_.push_back(half(*e));
+        for (auto e = run + 1; e != end; ++e) {
+          auto same = std::find_if(run, e, [&](uint64_t x) { return (x & 1) == (*e & 1); });
+          if (same == e) continue;
+          log_.add("directed edge ", org(half(*e)), "->", dst(half(*e)), " is used twice: by ",
+                   tri(half(*same) / 3), " and ", tri(half(*e) / 3));
+          break;
+        }
+      }
+    }
+  }
+
+  // ---- 3. no vertex star wraps around more than once ---------------------------------------
+  void checkStars() {
+    for (uint32_t v = 0; v < n_; ++v) {
+      if (anyOut_[v] == kNone) continue;
+      if (cover_[v] > 1)
+        log_.add("vertex ", v, ' ', Xy{P(v)}, ": its triangles wrap around it ", cover_[v],
+                 " times (folded or overlapping triangles)");
+      else if (cover_[v] == 0 && !boundaryVertex_[v])
+        log_.add("vertex ", v, ' ', Xy{P(v)},
+                 " has no boundary edge, but its triangles do not close around it");
+    }
+    // Each fan at a boundary vertex starts at an outgoing boundary edge; the fan must not
+    // wrap past its own start, nor may another fan cover that direction.
+    for (uint32_t h : boundary_) {
+      uint32_t v = org(h), covering = 0;
+      forEachOut(v, [&](uint32_t g) {
+        covering += orient2d(P(v), P(dst(g)), P(dst(h))) >= 0 &&
+                    orient2d(P(v), P(dst(h)), P(org(prevHe(g)))) > 0;
+      });
+      if (covering > 1)
+        log_.add("vertex ", v, ' ', Xy{P(v)}, ": ", covering,
+                 " of its triangles overlap along boundary edge ", v, "->", dst(h));
+    }
+  }
+
+  // ---- 4. used vertices, duplicates, the input-to-mesh vertex map --------------------------
+  void checkVertices() {
+    used_.assign(n_, 0);
+    for (uint32_t v = 0; v < n_; ++v) used_[v] = anyOut_[v] != kNone;
+    CoordTable table(m_.points.data(), n_);
+    for (uint32_t v = 0; v < n_; ++v) {
+      if (!used_[v]) continue;
+      uint32_t first = table.insert(v);
+      if (first != v)
+        log_.add("vertices ", first, " and ", v, " are both used and both at ", Xy{P(v)});
+    }
+    // Segment endpoints go by coordinates: a duplicate input vertex stands for its used twin.
+    rep_.assign(nIn_, kNone);
+    for (uint32_t v = 0; v < nIn_; ++v)
+      rep_[v] = used_[v] && P(v)[0] == inP(v)[0] && P(v)[1] == inP(v)[1] ? v : table.find(inP(v));
+    twinOfUnused_.assign(n_, kNone);
+    int flat = -1;  // whether all vertices are collinear; worked out when first needed
+    for (uint32_t v = 0; v < n_; ++v) {
+      if (used_[v]) continue;
+      uint32_t u = table.find(P(v));
+      twinOfUnused_[v] = u;
+      if (u == kNone && hullDomain() && (opt_.mode == Mode::Delaunay || in_.holes.empty())) {
+        if (flat < 0) flat = allCollinear();
+        if (!flat)
+          log_.add("vertex ", v, ' ', Xy{P(v)},
+                   " is used by no triangle, but the whole convex hull is meshed");
+      }
+      if (u == kNone || v >= nIn_) continue;
+      if (u >= nIn_)
+        log_.add("input vertex ", v, ' ', Xy{P(v)}, " is unused, but Steiner vertex ", u,
+                 " is at the same point");
+      else if (u > v)
+        log_.add("input vertex ", v, ' ', Xy{P(v)}, " is unused, but its later duplicate ", u,
+                 " is used (the first copy should be kept)");
+    }
+  }
+
+  // Whether the domain is the convex hull (less hole regions): Delaunay mode, and Triangle
+  // fill with convexHull set or without any segment. The fill rules ignore convexHull.
+  bool hullDomain() const {
+    return opt_.mode == Mode::Delaunay ||
+           (opt_.fill == FillRule::Triangle && (opt_.convexHull || in_.segments.empty()));
+  }
+
+  bool allCollinear() const {
+    uint32_t a = 0, b = 1;
+    while (b < n_ && P(b)[0] == P(a)[0] && P(b)[1] == P(a)[1]) ++b;
+    for (uint32_t v = b + 1; v < n_; ++v)
+      if (orient2d(P(a), P(b), P(v)) != 0) return false;
+    return true;
+  }
+
+  void checkKinds() {
+    if (m_.vertexKind.empty()) return;
+    static const char* names[] = {"input", "unused", "segment", "free"};
+    for (uint32_t v = 0; v < n_; ++v) {
+      uint8_t kind = m_.vertexKind[v];
+      if (kind > kFreeVertex) {
+        log_.add("vertex ", v, " has unknown kind ", int(kind));
+        continue;
+      }
+      uint8_t want = kind;
+      if (v < nIn_)
+        want = used_[v] ? kInputVertex : kUnusedVertex;
+      else if (kind < kSegmentVertex)
+        want = kFreeVertex;
+      else if (opt_.mode != Mode::Delaunay && used_[v])
+        want = onSegment_[v] != kNone ? kSegmentVertex : kFreeVertex;
+      if (want == kind) continue;
+      if (v >= nIn_ && want == kSegmentVertex)
+        log_.add("vertex ", v, ' ', Xy{P(v)}, " has kind free, but lies on input segment ",
+                 onSegment_[v]);
+      else if (v >= nIn_ && kind == kSegmentVertex)
+        log_.add("vertex ", v, ' ', Xy{P(v)}, " has kind segment, but lies on no input segment");
+      else
+        log_.add("vertex ", v, ' ', Xy{P(v)}, " has kind ", names[kind], ", expected ",
+                 names[want]);
+    }
+  }
+
+  // The points to locate among the triangles: unused vertices without a used twin, and
+  // (Triangle fill) the hole points.
+  std::vector<Query> makeQueries() {
+    std::vector<Query> q;
+    for (uint32_t v = 0; v < n_; ++v)
+      if (!used_[v] && twinOfUnused_[v] == kNone)
+        q.push_back({Query::Unused, v, {P(v)[0], P(v)[1]}});
+    if (opt_.mode != Mode::Delaunay && opt_.fill == FillRule::Triangle)
+      for (uint32_t i = 0; i < in_.holes.size() / 2; ++i) {
+        const double* h = &in_.holes[2 * size_t(i)];
+        if (finite(h))
+          q.push_back({Query::Hole, i, {h[0], h[1]}});
+        else
+          log_.add("hole ", i, ' ', Xy{h}, " is not finite");
+      }
+    return q;
+  }
+
+  // ---- 5. every input segment is a chain of mesh edges ----------------------------------
+  // Walks from a toward b. A step goes along a mesh edge to a vertex exactly on the segment
+  // and strictly closer to b, or else along a listed segment edge (Mesh::segments) to a
+  // vertex within rounding reach of the segment (a rounded crossing or split point: two
+  // roundings of nearly the same point may even be out of order) not visited before. Where
+  // no step continues, the segment must leave the meshed domain there (no
+  // triangle of the vertex covers the direction toward b) and may re-enter only at a boundary
+  // vertex on it (within rounding reach).
+  void walkSegment(uint32_t s) {
+    uint32_t a = in_.segments[2 * s], b = in_.segments[2 * s + 1];
+    const double *A = inP(a), *B = inP(b);
+    if (A[0] == B[0] && A[1] == B[1]) return;
+    // Position along the segment: the coordinate on its dominant axis, signed to grow toward b.
+    int axis = std::fabs(B[0] - A[0]) >= std::fabs(B[1] - A[1]) ? 0 : 1;
+    double dir = B[axis] > A[axis] ? 1 : -1;
+    auto key = [&](const double* p) { return dir * p[axis]; };
+    auto name = [&](auto&&... parts) {
+      log_.add("input segment ", s, " (", a, "->", b, ") ", parts...);
+    };
+
+    std::vector<uint32_t> entries;  // boundary vertices on the segment, in order; built lazily
+    bool haveEntries = false;
+    size_t nextEntry = 0;
+    auto entryAfter = [&](double k) {
+      if (!haveEntries) {
+        haveEntries = true;
+        double r = roundingReach(A, B, A);
+        double box[8][2] = {{A[0] - r, A[1] - r}, {A[0] + r, A[1] - r}, {A[0] + r, A[1] + r},
+                            {A[0] - r, A[1] + r}, {B[0] - r, B[1] - r}, {B[0] + r, B[1] - r},
+                            {B[0] + r, B[1] + r}, {B[0] - r, B[1] + r}};
+        const double* around[8];
+        for (int i = 0; i < 8; ++i) around[i] = box[i];
+        boundaryGrid().forEachNear(around, 8, [&](const Query& q) {
+          if (key(q.xy) >= key(A) && key(q.xy) <= key(B) && nearLine(A, B, q.xy))
+            entries.push_back(q.id);
+        });
+        std::sort(entries.begin(), entries.end(),
+                  [&](uint32_t u, uint32_t v) { return key(P(u)) < key(P(v)); });
+      }
+      while (nextEntry < entries.size() && key(P(entries[nextEntry])) <= k) ++nextEntry;
+      return nextEntry < entries.size() ? entries[nextEntry++] : kNone;
+    };
+
+    uint32_t start = rep_[a], end = rep_[b];
+    uint32_t cur = start != kNone ? start : entryAfter(-std::numeric_limits<double>::infinity());
+    if (cur != start && cur != kNone && enteredThroughTriangle(cur, A, name)) return;
+    while (cur != kNone && cur != end) {
+      onSegment_[cur] = s;
+      uint32_t exact = kNone, exactHe = kNone, past = kNone, near = kNone, nearHe = kNone;
+      forEachEdge(cur, [&](uint32_t c, uint32_t h) {
+        bool on = orient2d(A, B, P(c)) == 0;
+        if (on && key(P(c)) > key(P(cur))) {
+          if (key(P(c)) > key(B))
+            past = c;
+          else if (exact == kNone)
+            exact = c, exactHe = h;
+        } else if (listed_[canon(h)] && onSegment_[c] != s && key(P(c)) <= key(B) &&
+                   (near == kNone || key(P(c)) > key(P(near))) && (on || nearLine(A, B, P(c)))) {
+          near = c, nearHe = h;  // the most advanced, if several
+        }
+      });
+      if (exact == kNone) exact = near, exactHe = nearHe;
+      if (exact != kNone) {
+        uint32_t e = canon(exactHe);
+        marked_[e] = 1;
+        segCount_[e] += org(e) == cur ? 1 : -1;
+        cur = exact;
+        continue;
+      }
+      if (past != kNone)
+        return name("is not a chain of mesh edges: mesh edge ", cur, "-", past, " runs past ", b);
+      uint32_t t = triangleToward(cur, B);
+      if (t != kNone)
+        return name("is not a chain of mesh edges: stops at vertex ", cur, " and enters ", tri(t));
+      cur = entryAfter(key(P(cur)));
+      if (cur != kNone && enteredThroughTriangle(cur, A, name)) return;
+    }
+    if (end != kNone && cur != end)
+      name("is not a chain of mesh edges: never reaches vertex ", end, ", which is in the mesh");
+    if (cur == end && end != kNone) onSegment_[end] = s;
+  }
+
+  // Rounded constructions (segment crossings and splits) leave a Steiner point a few units in
+  // the last place off its segment. The reach allowed is kRoundingUlps ulps of the largest
+  // coordinate involved; it admits only vertices joined by listed segment edges.
+  static double roundingReach(const double* a, const double* b, const double* c) {
+    double m = 0;
+    for (const double* p : {a, b, c}) m = std::max({m, std::fabs(p[0]), std::fabs(p[1])});
+    return kRoundingUlps * std::numeric_limits<double>::epsilon() *
+           std::max(m, std::numeric_limits<double>::min());
+  }
+  // Whether the line ab passes through the square of half-side roundingReach around c (exact
+  // orientation of its corners).
+  static bool nearLine(const double* a, const double* b, const double* c) {
+    double r = roundingReach(a, b, c);
+    int below = 0, above = 0;
+    for (double dx : {-r, r})
+      for (double dy : {-r, r}) {
+        const double q[2] = {c[0] + dx, c[1] + dy};
+        double o = orient2d(a, b, q);
+        below += o<0, above += o> 0;
+      }
+    return below < 4 && above < 4;
+  }
+
+  const QueryGrid& boundaryGrid() {
+    if (!boundaryGrid_) {
+      std::vector<Query> q;
+      for (uint32_t v = 0; v < n_; ++v)
+        if (boundaryVertex_[v]) q.push_back({Query::Boundary, v, {P(v)[0], P(v)[1]}});
+      boundaryGrid_ = std::make_unique<QueryGrid>(std::move(q));
+    }
+    return *boundaryGrid_;
+  }
+
+  // The segment reaches boundary vertex v from outside the mesh: it must not arrive through
+  // one of v's triangles.
+  template <class Name>
+  bool enteredThroughTriangle(uint32_t v, const double* A, Name& name) {
+    uint32_t t = triangleToward(v, A);
+    if (t != kNone) name("is not a chain of mesh edges: reaches vertex ", v, " through ", tri(t));
+    return t != kNone;
+  }
+
+  void readMeshSegments() {
+    for (size_t i = 0; i + 1 < m_.segments.size(); i += 2) {
+      uint32_t u = m_.segments[i], v = m_.segments[i + 1], h = meshEdge(u, v);
+      if (h == kNone)
+        log_.add("mesh segment ", i / 2, " (", u, "-", v, ") is not a mesh edge");
+      else if (listed_[canon(h)])
+        log_.add("mesh segment ", i / 2, " (", u, "-", v, ") is listed twice");
+      else
+        listed_[canon(h)] = 1;
+    }
+  }
+
+  // Mesh::segments lists exactly the mesh edges that lie on input segments.
+  void checkMeshSegments() {
+    for (size_t i = 0; i + 1 < m_.segments.size(); i += 2) {
+      uint32_t u = m_.segments[i], v = m_.segments[i + 1], h = meshEdge(u, v);
+      if (h != kNone && !marked_[canon(h)])
+        log_.add("mesh segment ", i / 2, " (", u, "-", v, ") lies on no input segment");
+    }
+    for (uint32_t h = 0; h < 3 * T_; ++h)
+      if (marked_[h] && !listed_[h])
+        log_.add("mesh edge ", org(h), "-", dst(h),
+                 " lies on an input segment but is missing from mesh segments");
+  }
+
+  // ---- 6. domain: boundary edges, fill rule, hole points, unused vertices -----------------
+  void checkBoundaryEdges() {
+    bool hullOk = hullDomain();
+    bool segmentOk = opt_.mode != Mode::Delaunay;
+    std::vector<uint32_t> hull, hullNext;
+    if (hullOk) {
+      hull = convexHull(m_.points, used_);
+      hullNext.assign(n_, kNone);
+      for (size_t i = 0; i < hull.size(); ++i) hullNext[hull[i]] = hull[(i + 1) % hull.size()];
+    }
+    for (uint32_t h : boundary_) {
+      if (segmentOk && marked_[h]) continue;
+      if (hullOk && hullNext[org(h)] == dst(h)) continue;
+      log_.add("boundary edge ", org(h), "->", dst(h), " of ", tri(h / 3),
+               !hullOk     ? " does not lie on an input segment"
+               : segmentOk ? " lies neither on an input segment nor on the convex hull"
+                           : " is not a convex hull edge");
+    }
+  }
+
+  // Winding numbers are defined (independent of the ray) only when the segments form closed
+  // cycles: every point is the tail of as many segments as it is the head of. For EvenOdd
+  // only parity matters, and an even number of segment ends at every point suffices.
+  bool windingIsDefined() const {
+    CoordTable table(in_.points.data(), nIn_);
+    std::vector<int64_t> balance(nIn_, 0);
+    bool parity = opt_.fill == FillRule::EvenOdd;
+    for (uint32_t s = 0; s < in_.segmentCount(); ++s) {
+      uint32_t a = table.insert(in_.segments[2 * s]), b = table.insert(in_.segments[2 * s + 1]);
+      if (a != b) ++balance[a], balance[b] += parity ? 1 : -1;
+    }
+    return std::all_of(balance.begin(), balance.end(),
+                       [&](int64_t x) { return parity ? x % 2 == 0 : x == 0; });
+  }
+
+  // EvenOdd / NonZero: winding numbers are constant inside each triangle and change across
+  // an edge by the input segments along it, so one ray-cast per connected component of
+  // triangles fixes every triangle's winding number and the number just beyond each
+  // boundary edge. Triangles must be kept by the rule, and what lies beyond must not be.
+  void checkWindings() {
+    auto keeps = [&](int64_t w) { return opt_.fill == FillRule::EvenOdd ? (w & 1) != 0 : w != 0; };
+    const char* rule = opt_.fill == FillRule::EvenOdd ? "EvenOdd" : "NonZero";
+    std::vector<uint32_t> comp(T_, kNone), order;
+    std::vector<int64_t> rel(T_, 0), offset;
+    std::vector<std::array<double, 2>> seeds;
+    order.reserve(T_);
+    for (uint32_t root = 0; root < T_; ++root) {
+      if (!good_[root] || comp[root] != kNone) continue;
+      uint32_t c = uint32_t(seeds.size());
+      size_t first = order.size();
+      comp[root] = c;
+      order.push_back(root);
+      for (size_t i = first; i < order.size(); ++i) {
+        uint32_t t = order[i];
+        for (uint32_t h = 3 * t; h < 3 * t + 3; ++h) {
+          if (twin_[h] == kNone) continue;
+          uint32_t u = twin_[h] / 3;
+          int64_t w = rel[t] - along(h);  // t is left of h, u right of it
+          if (comp[u] == kNone) {
+            comp[u] = c, rel[u] = w;
+            order.push_back(u);
+          } else if (rel[u] != w && t < u) {
+            log_.add("winding numbers disagree across edge ", org(h), "-", dst(h), " between ",
+                     tri(t), " and ", tri(u), ": an input segment crosses the mesh");
+          }
+        }
+      }
+      uint32_t seed = interiorTriangle(order, first);
+      seeds.push_back(centroid(seed));
+      offset.push_back(-rel[seed]);
+    }
+    std::vector<int64_t> seedWinding = windingNumbers(in_, seeds);
+    for (uint32_t c = 0; c < seeds.size(); ++c) offset[c] += seedWinding[c];
+    for (uint32_t t = 0; t < T_; ++t) {
+      if (!good_[t]) continue;
+      int64_t w = rel[t] + offset[comp[t]];
+      if (!keeps(w))
+        log_.add(tri(t), " lies where the winding number is ", w, ", which ", rule, " leaves out");
+      for (uint32_t h = 3 * t; h < 3 * t + 3; ++h)
+        if (twin_[h] == kNone && keeps(w - along(h)))
+          log_.add("boundary edge ", org(h), "->", dst(h), " of ", tri(t),
+                   ": the region beyond it has winding number ", w - along(h), ", which ", rule,
+                   " keeps, but it is not meshed");
+    }
+  }
+
+  std::array<double, 2> centroid(uint32_t t) const {
+    const uint32_t* c = corners(t);
+    std::array<double, 2> g;
+    for (int k = 0; k < 2; ++k) g[k] = (P(c[0])[k] + P(c[1])[k] + P(c[2])[k]) / 3;
+    return g;
+  }
+
+  // A triangle of component order[first..] whose rounded centroid an exact test confirms to
+  // lie strictly inside it (a needle's centroid may round onto an edge).
+  uint32_t interiorTriangle(const std::vector<uint32_t>& order, size_t first) {
+    for (size_t i = first; i < order.size(); ++i) {
+      const uint32_t* c = corners(order[i]);
+      std::array<double, 2> g = centroid(order[i]);
+      if (orient2d(P(c[0]), P(c[1]), g.data()) > 0 && orient2d(P(c[1]), P(c[2]), g.data()) > 0 &&
+          orient2d(P(c[2]), P(c[0]), g.data()) > 0)
+        return order[i];
+    }
+    log_.add("no triangle of the component of ", tri(order[first]),
+             " has a centroid strictly inside it; its winding numbers may be off by one");
+    return order[first];
+  }
+
+  // Unused vertices must lie outside every triangle; hole points (Triangle fill) inside no
+  // triangle and on no unconstrained edge between two triangles. (Boundary vertices are not
+  // located: a domain's long thin triangles would make that O(T sqrt(n)); overlaps show up
+  // as folded stars, reused directed edges, coincident vertices or stray boundary edges.)
+  void locateQueries() {
+    if (grid_.queries().empty()) return;
+    for (uint32_t t = 0; t < T_; ++t) {
+      if (!good_[t]) continue;
+      const uint32_t* c = corners(t);
+      const double* pts[3] = {P(c[0]), P(c[1]), P(c[2])};
+      grid_.forEachNear(pts, 3, [&](const Query& q) {
+        double o[3];
+        for (int k = 0; k < 3; ++k)
+          if ((o[k] = orient2d(pts[k], pts[(k + 1) % 3], q.xy)) < 0) return;
+        switch (q.kind) {
+          case Query::Unused:
+            log_.add("vertex ", q.id, ' ', Xy{q.xy}, " is used by no triangle but lies in ",
+                     tri(t));
+            break;
+          case Query::Boundary:
+            break;
+          case Query::Hole: {
+            int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+            if (zeros == 0) {
+              log_.add("hole ", q.id, ' ', Xy{q.xy}, " lies inside ", tri(t));
+            } else if (zeros == 1) {
+              uint32_t h = 3 * t + (o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2);
+              if (twin_[h] != kNone && !marked_[canon(h)] && t < twin_[h] / 3)
+                log_.add("hole ", q.id, ' ', Xy{q.xy}, " lies on edge ", org(h), "-", dst(h),
+                         " between ", tri(t), " and ", tri(twin_[h] / 3),
+                         ", inside the meshed domain");
+            }
+            break;
+          }
+        }
+      });
+    }
+  }
+
+  const Pslg& in_;
+  const Mesh& m_;
+  const Options& opt_;
+  ErrorLog log_;
+  uint32_t nIn_ = 0, n_ = 0, T_ = 0;
+  std::vector<uint8_t> good_, used_, boundaryVertex_;
+  std::vector<uint32_t> boundary_;  // half-edges without a twin
+  std::vector<uint32_t> cover_;     // per vertex: its triangles covering the +x direction
+  std::vector<uint32_t> twin_, rep_, twinOfUnused_;
+  std::vector<uint32_t> anyOut_;             // per vertex: a half-edge leaving it, or kNone
+  std::vector<uint32_t> fanOff_, fanStart_;  // per vertex: its boundary half-edges (open fans)
+  std::vector<uint8_t> marked_;              // per canonical half-edge: lies on an input segment
+  std::vector<uint8_t> listed_;              // per canonical half-edge: in Mesh::segments
+  std::vector<int32_t> segCount_;    // per canonical half-edge: segments along it minus against
+  std::vector<uint32_t> onSegment_;  // per vertex: an input segment through it, or kNone
+  QueryGrid grid_{{}};               // unused vertices and hole points
+  std::unique_ptr<QueryGrid> boundaryGrid_;  // boundary vertices, built when a walk needs it
+};
+
+}  // namespace
+
+Validation validate(const Pslg& input, const Mesh& mesh, const Options& options) {
+  Validation result;
+  Validator(input, mesh, options, result).run();
+  return result;
+}
+
+}  // namespace acutemesh
