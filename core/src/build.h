@@ -51,8 +51,10 @@ StepResult insertSegments(Triangulation& T, const Pslg& input,
                           const Budget& budget);
 
 // Marks which triangles belong to the domain (per triangle slot: 1 inside, 0 outside or
-// ghost or free), following options.fill / convexHull and the input's hole points.
+// ghost or free), following options.fill / convexHull and (Triangle fill) the input's hole
+// points. Fill rules need T.trackSegments.
 std::vector<uint8_t> classifyDomain(const Triangulation& T, const Pslg& input,
-                                    const Options& options, bool keepHull);
+                                    const Options& options, bool keepHull,
+                                    std::vector<std::string>& warnings);
 
 }  // namespace acutemesh::detail

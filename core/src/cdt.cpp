@@ -6,6 +6,8 @@
 // segments then pass through that vertex), and otherwise the crossed edges are flipped away
 // (Sloan's method) and Delaunay is restored with Lawson flips around the new fixed edge.
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <deque>
 
 #include "acutemesh/predicates.h"
@@ -24,7 +26,22 @@ class SegmentInserter {
  public:
   SegmentInserter(Triangulation& T, const Pslg& input, const std::vector<uint32_t>& canonical,
                   const Budget& budget)
-      : T_(T), input_(input), canonical_(canonical), budget_(budget) {}
+      : T_(T), input_(input), canonical_(canonical), budget_(budget),
+        inputCount_(uint32_t(input.vertexCount())) {
+    // representative_[s]: the first segment with the same two (merged) ends as s.
+    size_t n = input.segmentCount();
+    std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
+    for (size_t i = 0; i < n; ++i) {
+      uint32_t a = canonical[input.segments[2 * i]], b = canonical[input.segments[2 * i + 1]];
+      keyed[i] = {(uint64_t(std::min(a, b)) << 32) | std::max(a, b), uint32_t(i)};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    representative_.resize(n);
+    for (size_t i = 0; i < n; ++i)
+      representative_[keyed[i].second] =
+          i > 0 && keyed[i].first == keyed[i - 1].first ? representative_[keyed[i - 1].second]
+                                                        : keyed[i].second;
+  }
 
   StepResult insert(uint32_t seg, uint64_t crossingBudget);
   uint64_t crossings() const { return crossings_; }
@@ -34,17 +51,25 @@ class SegmentInserter {
   const double* segmentEnd(uint32_t seg, int k) const {
     return P(canonical_[input_.segments[2 * size_t(seg) + k]]);
   }
+  // Whether vertex y lies exactly on input segment seg, strictly between its ends.
+  bool onSegment(uint32_t seg, uint32_t y) const {
+    const double *a = segmentEnd(seg, 0), *b = segmentEnd(seg, 1);
+    return orient2d(a, b, P(y)) == 0 && dot2d(P(y), a, b) < 0;
+  }
   // Returns the half-edge leaving u toward the segment's interior: an edge u->w with w on the
   // segment (*collinear set), or the edge w->x of the triangle (u, w, x) that the segment
   // crosses first.
   uint32_t firstStep(uint32_t u, uint32_t v, bool* collinear) const;
   bool splitAtCrossing(const Piece& piece, uint32_t crossed);
+  uint32_t nearbyCrossing(const double* p, uint32_t t) const;
   bool flipAway(uint32_t u, uint32_t end, const Piece& piece, std::vector<uint32_t>& crossedEdges);
 
   Triangulation& T_;
   const Pslg& input_;
   const std::vector<uint32_t>& canonical_;
   const Budget& budget_;
+  uint32_t inputCount_;  // store vertices below this are input vertices, exact
+  std::vector<uint32_t> representative_;
   std::vector<Piece> todo_;
   std::vector<std::pair<uint32_t, uint32_t>> created_;
   uint64_t crossings_ = 0;
@@ -76,18 +101,40 @@ uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) con
   return kNone;
 }
 
+// Three or more segments through one point meet pairwise at roundings of it a few ulps
+// apart: a crossing point that close to an earlier one (a corner of the triangle it falls
+// in) is taken to be that one, so the segments share a single vertex there.
+uint32_t SegmentInserter::nearbyCrossing(const double* p, uint32_t t) const {
+  double tolerance = 16 * std::numeric_limits<double>::epsilon() *
+                     std::max(std::fabs(p[0]), std::fabs(p[1]));
+  for (uint32_t k = 0; k < 3; ++k) {
+    uint32_t c = T_.tri[3 * t + k];
+    if (c == kGhost || c < inputCount_) continue;
+    if (std::fabs(P(c)[0] - p[0]) <= tolerance && std::fabs(P(c)[1] - p[1]) <= tolerance)
+      return c;
+  }
+  return kNone;
+}
+
 // The segment piece crosses the fixed edge `crossed`: add a vertex at the crossing and route
 // both the piece and the fixed edge through it. Returns false if no vertex could be placed.
 bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
   uint32_t w = T_.tri[crossed], x = T_.tri[next(crossed)];
   // Intersect the two original input segments, not the pieces (whose ends may be earlier
   // rounded crossing points): the same pair then always yields the same point.
-  // The lower-numbered segment is always the one parametrised, so a pair gives one point.
+  // Repeated segments (same ends, either direction) share one representative, and the
+  // lower-numbered representative is always the one parametrised: a pair of segments always
+  // yields the very same point, however often the input repeats them.
   uint32_t other = T_.segment[crossed];
-  uint32_t first = std::min(piece.seg, other), second = std::max(piece.seg, other);
-  const double *u = segmentEnd(first, 0), *v = segmentEnd(first, 1);
-  const double *pw = other != kNone ? segmentEnd(second, 0) : P(w);
-  const double *px = other != kNone ? segmentEnd(second, 1) : P(x);
+  const double *u, *v, *pw = P(w), *px = P(x);
+  if (other == kNone) {
+    u = segmentEnd(piece.seg, 0), v = segmentEnd(piece.seg, 1);
+  } else {
+    uint32_t first = std::min(representative_[piece.seg], representative_[other]);
+    uint32_t second = std::max(representative_[piece.seg], representative_[other]);
+    u = segmentEnd(first, 0), v = segmentEnd(first, 1);
+    pw = segmentEnd(second, 0), px = segmentEnd(second, 1);
+  }
   double ou = orient2d(pw, px, u), ov = orient2d(pw, px, v);
   double p[2];
   if ((ou > 0 && ov < 0) || (ou < 0 && ov > 0)) {
@@ -101,16 +148,12 @@ bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
     p[0] = a[0] + s * (b[0] - a[0]), p[1] = a[1] + s * (b[1] - a[1]);
   }
   int windOfCrossed = T_.wind[crossed];
-  uint32_t q = T_.addVertex(p[0], p[1]);
   Location loc = T_.locate(p, crossed / 3);
+  if (loc.where == Where::Failed) return false;
   bool onCrossed = loc.where == Where::OnEdge &&
                    (loc.edge == crossed || loc.edge == T_.opp[crossed]);
-  uint32_t r = T_.insertAt(q, loc);
-  if (r == kNone) return false;
-  if (r != q) {  // rounded onto an existing vertex: drop the unused new one
-    T_.pts.resize(T_.pts.size() - 2);
-    T_.vertexEdge.pop_back();
-  }
+  uint32_t r = loc.where == Where::OnVertex ? loc.vertex : nearbyCrossing(p, loc.tri);
+  if (r == kNone) r = T_.insertAt(T_.addVertex(p[0], p[1]), loc);
   if (!onCrossed && r != w && r != x) {
     // The rounded crossing point is off the fixed edge: re-route that edge through it.
     uint32_t old = T_.findEdge(w, x);
@@ -192,11 +235,20 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
       continue;
     }
     // Walk across the triangles the piece passes through. Crossed edges run from the
-    // vertex right of u->v to the one left of it.
+    // vertex right of u->v to the one left of it. A piece that starts or ends at a rounded
+    // crossing point is off its segment's exact line: a vertex exactly on the segment can then
+    // lie beside the piece, and it must still split the segment.
+    bool rounded = u >= inputCount_ || v >= inputCount_;
     crossedEdges.clear();
     uint32_t end = kNone;
     bool split = false;
-    while (true) {
+    for (uint32_t y : {T_.tri[h], T_.tri[next(h)]})
+      if (rounded && !split && onSegment(piece.seg, y)) {
+        todo_.push_back({y, v, piece.dir, piece.seg});
+        todo_.push_back({u, y, piece.dir, piece.seg});
+        split = true;
+      }
+    while (!split) {
       if (T_.isFixed(h)) {
         if (++crossings_ > crossingBudget || budget_.stop())
           return {budget_.cancelled() ? Status::Cancelled : Status::BadInput,
@@ -215,6 +267,12 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
       double o = orient2d(P(u), P(v), P(y));
       if (o == 0) {
         end = y;
+        break;
+      }
+      if (rounded && onSegment(piece.seg, y)) {
+        todo_.push_back({y, v, piece.dir, piece.seg});
+        todo_.push_back({u, y, piece.dir, piece.seg});
+        split = true;
         break;
       }
       h = o > 0 ? next(g) : prev(g);

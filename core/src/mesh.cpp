@@ -185,7 +185,7 @@ Result mesh(const Pslg& input, const Options& options) {
 
   bool keepHull = !constrained || options.convexHull || input.segments.empty();
   std::vector<uint8_t> inside = detail::classifyDomain(
-      T, constrained ? input : Pslg{}, domainOptions, keepHull);
+      T, constrained ? input : Pslg{}, domainOptions, keepHull, stats.warnings);
   endPhase("domain");
 
   extractMesh(T, inside, input, inputOf, result.mesh);

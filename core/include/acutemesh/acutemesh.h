@@ -47,7 +47,8 @@ enum class FillRule {
 struct Pslg {
   std::vector<double> points;      // x, y per vertex
   std::vector<uint32_t> segments;  // a, b per segment (directed a->b: matters for NonZero)
-  std::vector<double> holes;       // x, y per hole seed point (FillRule::Triangle only)
+  std::vector<double> holes;       // x, y per hole seed point (FillRule::Triangle only;
+                                   // the other rules find holes by nesting)
 
   size_t vertexCount() const { return points.size() / 2; }
   size_t segmentCount() const { return segments.size() / 2; }
@@ -128,7 +129,8 @@ struct Validation {
 //  - no vertex star wraps around more than once (no folded or overlapping triangles);
 //  - mesh vertex i == input vertex i; every used input vertex referenced by a triangle; an
 //    unused input vertex lies in no triangle;
-//  - every input segment of non-zero length is a chain of collinear mesh edges;
+//  - every input segment of non-zero length is a chain of mesh edges through vertices exactly
+//    on it, or through crossing points added by mesh() (rounded, within a few ulps of it);
 //  - domain: every boundary edge lies on an input segment (or on the convex hull when
 //    options.convexHull or mode Delaunay); no hole point (Triangle fill) lies in a triangle;
 //    with EvenOdd/NonZero every triangle lies in a region the rule keeps.
