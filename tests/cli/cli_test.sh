@@ -1,0 +1,113 @@
+#!/usr/bin/env bash
+# The acutemesh command line as a user meets it: exit status, messages, files written, --stats.
+# Usage: cli_test.sh PATH/TO/acutemesh   (run by ctest)
+set -uo pipefail
+cli=$1
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+data=$here/../data
+shared=$here/../../../shared/data
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+
+check() {  # check NAME CONDITION-COMMAND...
+  local name=$1
+  shift
+  if "$@"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAIL: $name"
+  fi
+}
+
+# run EXPECTED-STATUS ARGS...: runs the CLI, keeps stdout/stderr in $work/out, $work/err.
+run() {
+  local want=$1
+  shift
+  "$cli" "$@" >"$work/out" 2>"$work/err"
+  local got=$?
+  if [[ $got -ne $want ]]; then
+    echo "  acutemesh $*: exit $got, expected $want; stderr: $(head -c 300 "$work/err")"
+    return 1
+  fi
+}
+stderr_has() { grep -qF -- "$1" "$work/err" || { echo "  stderr lacks '$1': $(cat "$work/err")"; return 1; }; }
+stdout_has() { grep -qF -- "$1" "$work/out" || { echo "  stdout lacks '$1'"; return 1; }; }
+
+# --- success: default outputs next to a copy of the input, CCW .ele, stats JSON -------------
+cp "$data/A.poly" "$work/A.poly"
+check "A.poly default output" run 0 "$work/A.poly"
+check "A.1.node written" test -s "$work/A.1.node"
+check "A.1.ele written" test -s "$work/A.1.ele"
+check "A.1.ele has 29 triangles" grep -q '^29 3 0' "$work/A.1.ele"
+
+check "stats JSON" run 0 --stats --no-output "$work/A.poly"
+check "stats counts" stdout_has '"triangles": 29'
+check "stats status" stdout_has '"status": "ok"'
+check "stats parse as JSON" node -e "JSON.parse(require('fs').readFileSync('$work/out', 'utf8'))"
+check "no-output writes nothing" test ! -e "$work/A.1.svg"
+
+check "all formats" run 0 --format node,ele,poly,json,off,obj,svg -o "$work/all" "$work/A.poly"
+for ext in node ele poly json off obj svg; do
+  check "all formats: .$ext" test -s "$work/all.$ext"
+done
+check "svg is svg" grep -q '<svg' "$work/all.svg"
+check "off header" grep -q '^OFF' "$work/all.off"
+check "written .poly reads back" run 0 --no-output "$work/all.poly"
+
+check "delaunay mode" run 0 --mode delaunay --stats --no-output "$work/A.poly"
+check "delaunay keeps the hull" stdout_has '"triangles": 48'  # 2n - 2 - 8 hull vertices
+check "convex hull" run 0 --convex-hull --stats --no-output "$work/A.poly"
+check "convex hull triangles" stdout_has '"triangles": 47'  # the hole is one triangle
+
+check "superior with islands" run 0 --stats --no-output "$shared/poly/superior.poly"
+check "superior triangles" stdout_has '"triangles": 313'
+check "cgshop instance" run 0 --stats --no-output "$shared/cgshop2025/ortho_10_d2723dcc.instance.json"
+
+# Rings with fill rules: a square with a clockwise square hole.
+cat >"$work/rings.json" <<'EOF'
+{"rings": [[[0,0],[10,0],[10,10],[0,10]], [[3,3],[3,7],[7,7],[7,3]]]}
+EOF
+check "rings evenodd" run 0 --stats --no-output "$work/rings.json"
+check "rings evenodd fill named" stdout_has '"fill": "evenodd"'
+check "rings evenodd triangles" stdout_has '"triangles": 8'
+check "rings nonzero" run 0 --fill nonzero --stats --no-output "$work/rings.json"
+check "rings nonzero triangles" stdout_has '"triangles": 8'
+
+# Warnings go to stderr, and the run still succeeds.
+printf '4 2 0 0\n0 0 0\n1 1 0\n2 0 1\n3 1 0\n4 0\n0 0 1\n1 1 2\n2 2 0\n3 3 3\n0\n' >"$work/dup.poly"
+check "duplicates and zero-length segment" run 0 --no-output "$work/dup.poly"
+check "duplicate warning" stderr_has "duplicate vertices merged"
+check "zero-length warning" stderr_has "segment 3 has zero length"
+
+# --- bad input and usage: exit 2, one clear line ---------------------------------------------
+check "missing file" run 2 "$work/none.poly"
+check "missing file message" stderr_has "none.poly: cannot open"
+printf '3 2 0 0\n0 0 0\n1 1 1\n2 2 x\n0 0\n' >"$work/bad.poly"
+check "bad number" run 2 "$work/bad.poly"
+check "bad number names file and line" stderr_has "bad.poly:4:"
+printf '3 2 0 0\n0 0 0\n1 1 1\n2 2 2\n0 0\n' >"$work/line.poly"
+check "collinear" run 2 "$work/line.poly"
+check "collinear message" stderr_has "collinear"
+printf '1000000000 2 0 0\n0 0 0\n1 1 0\n2 0 1\n' >"$work/huge.poly"
+check "huge count" run 2 "$work/huge.poly"
+printf '3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 7\n' >"$work/index.poly"
+check "segment index out of range" run 2 "$work/index.poly"
+echo '{"vertices": [[0,0],[1,0]' >"$work/trunc.json"
+check "truncated JSON" run 2 "$work/trunc.json"
+check "unknown extension" run 2 "$work/A.txt"
+check "unknown option" run 2 --frobnicate "$work/A.poly"
+check "unknown option message" stderr_has "unknown option '--frobnicate'"
+check "unknown mode" run 2 --mode fast "$work/A.poly"
+check "refinement not yet" run 2 --mode acute "$work/A.poly"
+check "unknown format" run 2 --format png "$work/A.poly"
+check "no input" run 2
+check "two inputs" run 2 "$work/A.poly" "$work/A.poly"
+check "help" run 0 --help
+check "help text" stdout_has "usage: acutemesh"
+check "version" run 0 --version
+check "version text" stdout_has "acutemesh 0."
+
+echo "cli: $passed passed, $failed failed"
+[[ $failed -eq 0 ]]
