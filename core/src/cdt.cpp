@@ -71,6 +71,11 @@ class SegmentInserter {
   uint32_t inputCount_;  // store vertices below this are input vertices, exact
   std::vector<uint32_t> representative_;
   std::vector<Piece> todo_;
+  // flipAway's queue: crossed edges by their ends, with the half-edge last seen for them.
+  struct Crossed {
+    uint32_t w, x, e;
+  };
+  std::deque<Crossed> queue_;
   std::vector<std::pair<uint32_t, uint32_t>> created_;
   uint64_t crossings_ = 0;
 };
@@ -177,10 +182,8 @@ bool SegmentInserter::flipAway(uint32_t u, uint32_t end, const Piece& piece,
                                std::vector<uint32_t>& crossedEdges) {
   // Queue entries remember their half-edge; flips elsewhere usually leave it valid, so the
   // search around w runs only when it went stale.
-  struct Crossed {
-    uint32_t w, x, e;
-  };
-  std::deque<Crossed> queue;
+  std::deque<Crossed>& queue = queue_;
+  queue.clear();
   for (uint32_t e : crossedEdges) queue.push_back({T_.tri[e], T_.tri[next(e)], e});
   std::vector<std::pair<uint32_t, uint32_t>>& created = created_;
   created.clear();
