@@ -66,6 +66,14 @@ void Triangulation::init(uint32_t a, uint32_t b, uint32_t c) {
   link(3 * g1 + 2, 3 * g2 + 1);
 }
 
+// Where a point lies in the closed triangle t, given the edges whose line it is on.
+Location Triangulation::closedIn(uint32_t t, uint32_t zeros, const uint32_t zeroEdge[2]) const {
+  if (zeros == 0) return {Where::InTriangle, t, kNone, kNone};
+  if (zeros == 1) return {Where::OnEdge, t, zeroEdge[0], kNone};
+  uint32_t v = next(zeroEdge[0]) == zeroEdge[1] ? tri[zeroEdge[1]] : tri[zeroEdge[0]];
+  return {Where::OnVertex, t, kNone, v};
+}
+
 Location Triangulation::locate(const double* p, uint32_t hint) const {
   uint32_t slots = triangleSlots();
   uint32_t t = hint < slots && !isFree(hint) ? hint : kNone;
@@ -110,15 +118,11 @@ Location Triangulation::locate(const double* p, uint32_t hint) const {
       if (o == 0) zeroEdge[zeros++ & 1] = e;
     }
     if (moved) continue;
-    if (zeros == 0) return {Where::InTriangle, t, kNone, kNone};
-    if (zeros == 1) return {Where::OnEdge, t, zeroEdge[0], kNone};
-    uint32_t v = next(zeroEdge[0]) == zeroEdge[1] ? tri[zeroEdge[1]] : tri[zeroEdge[0]];
-    return {Where::OnVertex, t, kNone, v};
+    return closedIn(t, zeros, zeroEdge);
   }
   for (uint32_t s = 0; s < slots; ++s) {
     if (isFree(s) || isGhost(s)) continue;
-    int zeros = 0;
-    uint32_t zeroEdge[2] = {kNone, kNone};
+    uint32_t zeros = 0, zeroEdge[2] = {kNone, kNone};
     bool inside = true;
     for (uint32_t k = 0; k < 3 && inside; ++k) {
       uint32_t e = 3 * s + k;
@@ -127,10 +131,7 @@ Location Triangulation::locate(const double* p, uint32_t hint) const {
       if (o == 0) zeroEdge[zeros++ & 1] = e;
     }
     if (!inside) continue;
-    if (zeros == 0) return {Where::InTriangle, s, kNone, kNone};
-    if (zeros == 1) return {Where::OnEdge, s, zeroEdge[0], kNone};
-    uint32_t v = next(zeroEdge[0]) == zeroEdge[1] ? tri[zeroEdge[1]] : tri[zeroEdge[0]];
-    return {Where::OnVertex, s, kNone, v};
+    return closedIn(s, zeros, zeroEdge);
   }
   // Outside the hull: any ghost whose hull edge the point sees strictly will do.
   for (uint32_t s = 0; s < slots; ++s) {

@@ -127,6 +127,7 @@ class Triangulation {
     if (trackSegments) wind[e] = a.wind, segment[e] = a.segment;
   }
   static constexpr EdgeAttr kPlain = {kNone, 0, 0, kNone};
+  Location closedIn(uint32_t t, uint32_t zeros, const uint32_t zeroEdge[2]) const;
   uint32_t splitTriangle(uint32_t t, uint32_t v);
   uint32_t splitEdge(uint32_t e, uint32_t v);
   void legalizeFrom(uint32_t v, std::vector<uint32_t>& stack);
