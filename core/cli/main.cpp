@@ -1,5 +1,6 @@
 // acutemesh: the command-line tool. Reads a PSLG, meshes it, writes the mesh in the formats
 // asked for. Exit status: 0 ok, 1 target not met (best mesh written), 2 bad input or usage.
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -20,7 +21,8 @@ INPUT: .poly | .node (Triangle's formats) | .json (acutemesh PSLG or rings, CG:S
 
 options:
   -o, --output BASE    write BASE.node, BASE.ele, ... (default: INPUT without extension + ".1")
-  --format LIST        comma list of node,ele,poly,json,off,obj,svg (default: node,ele)
+  --format LIST        comma list of node,ele,poly,json,off,obj,svg,cgshop (default: node,ele)
+                       cgshop: BASE.solution.json, a CG:SHOP 2025 solution (CG:SHOP input only)
   --mode MODE          delaunay: Delaunay triangulation of the vertices (segments ignored)
                        cdt: constrained Delaunay triangulation of the domain (default)
   --fill RULE          which regions form the domain:
@@ -138,6 +140,7 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
 int main(int argc, char** argv) {
   std::string input, output;
   std::vector<std::string> formats{"node", "ele"};
+  bool cgshop = false;  // --format cgshop: BASE.solution.json, written apart from the others
   Options opt;
   bool fillGiven = false, wantStats = false, writeOutput = true;
 
@@ -159,11 +162,19 @@ int main(int argc, char** argv) {
       if (!value(output)) return usageError(a + " needs a file name base");
     } else if (a == "--format") {
       if (!value(v)) return usageError("--format needs a list, e.g. node,ele,svg");
-      formats = splitList(v);
-      for (const std::string& f : formats)
+      formats.clear();
+      cgshop = false;
+      for (const std::string& f : splitList(v)) {
+        if (f == "cgshop") {
+          cgshop = true;
+          continue;
+        }
         if (f != "node" && f != "ele" && f != "poly" && f != "json" && f != "off" &&
             f != "obj" && f != "svg")
-          return usageError("unknown format '" + f + "' (node, ele, poly, json, off, obj, svg)");
+          return usageError("unknown format '" + f +
+                            "' (node, ele, poly, json, off, obj, svg, cgshop)");
+        formats.push_back(f);
+      }
     } else if (a == "--mode") {
       if (!value(v)) return usageError("--mode needs delaunay or cdt");
       if (v == "delaunay") opt.mode = Mode::Delaunay;
@@ -208,6 +219,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   phases.push_back({"read", secondsSince(t0)});
+  if (cgshop && in.format != InputFormat::CgshopInstance)
+    return usageError("--format cgshop needs a CG:SHOP 2025 instance as input (.json with "
+                      "\"points_x\"), and " + input + " is not one");
   if (!fillGiven && in.hasRings) opt.fill = FillRule::EvenOdd;
 
   Result r = mesh(in.pslg, opt);
@@ -233,6 +247,21 @@ int main(int argc, char** argv) {
     if (!written.ok) {
       std::fprintf(stderr, "acutemesh: error: %s\n", written.message.c_str());
       return 2;
+    }
+    if (cgshop) {
+      const std::string path = output + ".solution.json";
+      const std::string text =
+          formatCgshopSolution(r.mesh, in.instanceUid, in.pslg.vertexCount());
+      std::FILE* f = std::fopen(path.c_str(), "wb");
+      int err = f ? 0 : (errno ? errno : EIO);
+      if (f && std::fwrite(text.data(), 1, text.size(), f) != text.size())
+        err = errno ? errno : EIO;
+      if (f && std::fclose(f) != 0 && err == 0) err = errno ? errno : EIO;
+      if (err) {
+        std::fprintf(stderr, "acutemesh: error: %s: cannot write (%s)\n", path.c_str(),
+                     std::strerror(err));
+        return 2;
+      }
     }
     phases.push_back({"write", secondsSince(tw)});
   }

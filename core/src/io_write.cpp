@@ -1,15 +1,18 @@
-// Mesh output: Triangle's .node/.ele/.poly, JSON, OFF, OBJ and SVG.
+// Mesh output: Triangle's .node/.ele/.poly, JSON, OFF, OBJ, SVG and the CG:SHOP 2025 solution.
 //
 // Coordinates are written so that they read back as the same doubles: the shortest
 // round-trip form (std::to_chars) where the library has it, "%.17g" otherwise. Vertex indices
 // in .node/.ele/.poly are 0-based (Triangle's -z convention), which each file states in its
-// first line; OBJ is 1-based by definition.
+// first line; OBJ is 1-based by definition. The CG:SHOP solution writes each coordinate as the
+// exact rational the double is (an integer, or "p/q" with q a power of two).
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 #include "acutemesh/io.h"
 
@@ -80,6 +83,94 @@ void putShort(std::string& s, double v) {
     n = 1;
   }
   s.append(buf, static_cast<size_t>(n));
+}
+
+// JSON string: quotes, backslashes and control characters escaped; other bytes as they are.
+void putJsonString(std::string& s, const std::string& v) {
+  s += '"';
+  for (const char c : v) {
+    if (c == '"' || c == '\\') {
+      s += '\\';
+      s += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+      s += buf;
+    } else {
+      s += c;
+    }
+  }
+  s += '"';
+}
+
+// Decimal digits of mant * 2^exp2 (exp2 >= 0), exactly, for any double's range: base 10^9
+// limbs, least significant first, multiplied by at most 2^30 at a time (a limb times 2^30
+// plus the carry stays below 2^61).
+void putBigDecimal(std::string& s, uint64_t mant, int exp2) {
+  const uint32_t kBase = 1000000000;
+  std::vector<uint32_t> limbs;
+  for (uint64_t v = mant; v; v /= kBase) limbs.push_back(static_cast<uint32_t>(v % kBase));
+  if (limbs.empty()) limbs.push_back(0);
+  while (exp2 > 0) {
+    const int step = std::min(exp2, 30);
+    uint64_t carry = 0;
+    for (uint32_t& l : limbs) {
+      const uint64_t t = (static_cast<uint64_t>(l) << step) + carry;
+      l = static_cast<uint32_t>(t % kBase);
+      carry = t / kBase;
+    }
+    for (; carry; carry /= kBase) limbs.push_back(static_cast<uint32_t>(carry % kBase));
+    exp2 -= step;
+  }
+  putUint(s, limbs.back());
+  for (size_t i = limbs.size() - 1; i-- > 0;) {
+    char buf[16];
+    const int n = std::snprintf(buf, sizeof buf, "%09u", static_cast<unsigned>(limbs[i]));
+    s.append(buf, static_cast<size_t>(n));
+  }
+}
+
+// mant * 2^exp2 (exp2 >= 0) in decimal: 64-bit when it fits, else the big routine.
+void putScaled(std::string& s, uint64_t mant, int exp2) {
+  int bits = 0;
+  for (uint64_t v = mant; v; v >>= 1) ++bits;
+  if (bits + exp2 <= 64) {
+    putUint(s, mant << exp2);
+  } else {
+    putBigDecimal(s, mant, exp2);
+  }
+}
+
+// A double exactly, as CG:SHOP 2025 solutions take coordinates: a JSON integer when the value
+// is one (-0 is 0), else the string "p/q" in lowest terms (q a power of two, p odd). A finite
+// double is m * 2^e with m < 2^53; trailing zero bits of m move into e. Non-finite: null.
+void putExactRational(std::string& s, double v) {
+  if (!std::isfinite(v)) {
+    s += "null";
+    return;
+  }
+  if (v == 0) {
+    s += '0';
+    return;
+  }
+  int e = 0;
+  const double f = std::frexp(std::fabs(v), &e);  // |v| = f * 2^e, f in [0.5, 1)
+  uint64_t mant = static_cast<uint64_t>(std::ldexp(f, 53));  // exact: 53 bits
+  int exp2 = e - 53;
+  while ((mant & 1) == 0) {
+    mant >>= 1;
+    ++exp2;
+  }
+  if (exp2 >= 0) {
+    if (v < 0) s += '-';
+    putScaled(s, mant, exp2);
+    return;
+  }
+  s += v < 0 ? "\"-" : "\"";
+  putUint(s, mant);
+  s += '/';
+  putScaled(s, 1, -exp2);  // 2^-exp2, up to 2^1074
+  s += '"';
 }
 
 bool writeFile(const std::string& path, const std::string& text, std::string& error) {
@@ -298,6 +389,65 @@ std::string formatSvg(const Mesh& m) {
     putShort(s, py(b));
   }
   s += "\"/>\n</svg>\n";
+  return s;
+}
+
+std::string formatCgshopSolution(const Mesh& m, const std::string& instanceUid,
+                                 size_t instanceVertexCount) {
+  const size_t n = m.vertexCount(), t = m.triangleCount();
+  auto valid = [&](size_t i) {
+    return m.triangles[3 * i] < n && m.triangles[3 * i + 1] < n && m.triangles[3 * i + 2] < n;
+  };
+  // Steiner points: vertices from instanceVertexCount on that some triangle uses, renumbered
+  // instanceVertexCount + k in index order; instance vertices keep their index.
+  std::vector<uint32_t> id(n);
+  std::vector<char> used(n, 0);
+  for (size_t i = 0; i < t; ++i)
+    if (valid(i))
+      for (int k = 0; k < 3; ++k) used[m.triangles[3 * i + k]] = 1;
+  std::vector<uint32_t> steiner;
+  for (size_t v = 0; v < n; ++v) {
+    if (v < instanceVertexCount) {
+      id[v] = static_cast<uint32_t>(v);
+    } else if (used[v]) {
+      id[v] = static_cast<uint32_t>(instanceVertexCount + steiner.size());
+      steiner.push_back(static_cast<uint32_t>(v));
+    }
+  }
+  // Each undirected edge once, as (smaller, larger) new index, sorted.
+  std::vector<uint64_t> edges;
+  edges.reserve(3 * t);
+  for (size_t i = 0; i < t; ++i) {
+    if (!valid(i)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = id[m.triangles[3 * i + k]], b = id[m.triangles[3 * i + (k + 1) % 3]];
+      if (a == b) continue;
+      edges.push_back(static_cast<uint64_t>(std::min(a, b)) << 32 | std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+
+  std::string s;
+  s.reserve(steiner.size() * 64 + edges.size() * 24 + instanceUid.size() + 160);
+  s += "{\n\"content_type\": \"CG_SHOP_2025_Solution\",\n\"instance_uid\": ";
+  putJsonString(s, instanceUid);
+  for (int axis = 0; axis < 2; ++axis) {
+    s += axis ? "],\n\"steiner_points_y\": [" : ",\n\"steiner_points_x\": [";
+    for (size_t k = 0; k < steiner.size(); ++k) {
+      s += k ? ",\n" : "\n";
+      putExactRational(s, m.points[2 * steiner[k] + axis]);
+    }
+  }
+  s += "],\n\"edges\": [";
+  for (size_t i = 0; i < edges.size(); ++i) {
+    s += i ? ",\n[" : "\n[";
+    putUint(s, edges[i] >> 32);
+    s += ',';
+    putUint(s, edges[i] & 0xffffffffu);
+    s += ']';
+  }
+  s += "]\n}\n";
   return s;
 }
 

@@ -75,6 +75,20 @@ std::string formatOff(const Mesh& m);
 std::string formatObj(const Mesh& m);
 std::string formatSvg(const Mesh& m);
 
+// The CG:SHOP 2025 solution of a mesh of a CG:SHOP instance with `instanceVertexCount` points
+// (Input::pslg.vertexCount()), as the challenge's verifier (pyutils25) reads it:
+// {"content_type": "CG_SHOP_2025_Solution", "instance_uid": UID, "steiner_points_x": [...],
+// "steiner_points_y": [...], "edges": [[i,j],...]}. Steiner points are the mesh vertices from
+// index instanceVertexCount on that a triangle uses, in index order; the k-th is numbered
+// instanceVertexCount + k in "edges", instance vertices keep their index. Each coordinate is
+// exact: a JSON integer when the double is one (any size; -0 is 0), else the string "p/q" in
+// lowest terms (q a power of two). "edges" holds every undirected edge of every triangle once,
+// as [smaller, larger] sorted. The verifier adds the region boundary and constraints itself
+// and rejects isolated points, so an unused instance vertex (a duplicate, or one outside the
+// region) makes the solution invalid; this writes it anyway.
+std::string formatCgshopSolution(const Mesh& m, const std::string& instanceUid,
+                                 size_t instanceVertexCount);
+
 // formats: any of "node", "ele", "poly", "json", "off", "obj", "svg".
 ParseResult writeMeshFiles(const Mesh& m, const std::string& base,
                            const std::vector<std::string>& formats);
