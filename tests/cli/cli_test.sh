@@ -109,5 +109,36 @@ check "help text" stdout_has "usage: acutemesh"
 check "version" run 0 --version
 check "version text" stdout_has "acutemesh 0."
 
+# --- CG:SHOP 2025 solution: BASE.solution.json, only for CG:SHOP instance input --------------
+cp "$shared/cgshop2025/ortho_10_d2723dcc.instance.json" "$work/ortho.instance.json"
+check "cgshop solution" run 0 --format cgshop -o "$work/ortho" "$work/ortho.instance.json"
+check "cgshop solution written" test -s "$work/ortho.solution.json"
+check "cgshop solution uid" \
+  grep -qF '"instance_uid": "ortho_10_d2723dcc"' "$work/ortho.solution.json"
+check "cgshop solution content type" \
+  grep -qF '"content_type": "CG_SHOP_2025_Solution"' "$work/ortho.solution.json"
+# A simple polygon of 10 vertices, nothing inside: 8 triangles, 2n - 3 = 17 edges, no Steiner.
+check "cgshop solution parses, 17 edges" node -e "
+  const s = JSON.parse(require('fs').readFileSync('$work/ortho.solution.json', 'utf8'));
+  const ok = s.edges.length === 17 && s.steiner_points_x.length === 0 &&
+    s.steiner_points_y.length === 0 &&
+    s.edges.every(e => e.length === 2 && e[0] < e[1] && e[1] < 10);
+  process.exit(ok ? 0 : 1);"
+check "cgshop alone writes no .node" test ! -e "$work/ortho.node"
+check "cgshop with other formats" \
+  run 0 --format node,cgshop,svg -o "$work/both" "$work/ortho.instance.json"
+check "cgshop with others: .node" test -s "$work/both.node"
+check "cgshop with others: .svg" test -s "$work/both.svg"
+check "cgshop with others: .solution.json" test -s "$work/both.solution.json"
+check "cgshop default base" run 0 --format cgshop "$work/ortho.instance.json"
+check "cgshop default base file" test -s "$work/ortho.instance.1.solution.json"
+check "cgshop on .poly" run 2 --format cgshop "$work/A.poly"
+check "cgshop on .poly message" stderr_has "--format cgshop needs a CG:SHOP 2025 instance"
+check "cgshop on .poly writes nothing" test ! -e "$work/A.1.solution.json"
+check "cgshop on JSON rings" run 2 --format cgshop -o "$work/r" "$work/rings.json"
+check "cgshop on JSON rings writes nothing" test ! -e "$work/r.solution.json"
+check "help lists cgshop" run 0 --help
+check "help text cgshop" stdout_has "cgshop: BASE.solution.json"
+
 echo "cli: $passed passed, $failed failed"
 [[ $failed -eq 0 ]]
