@@ -25,6 +25,14 @@ options:
                        cgshop: BASE.solution.json, a CG:SHOP 2025 solution (CG:SHOP input only)
   --mode MODE          delaunay: Delaunay triangulation of the vertices (segments ignored)
                        cdt: constrained Delaunay triangulation of the domain (default)
+                       acute: refine until every angle < --max-angle (default 90)
+                       nonobtuse: refine until every angle <= 90
+                       quality: refine until every angle >= --min-angle (default 20)
+  --max-angle DEG      acute mode's bound (exact at 90; 60 < DEG <= 90)
+  --min-angle DEG      smallest angle wanted (quality; also with acute / nonobtuse)
+  --max-area A         largest triangle area wanted (any refinement mode)
+  --max-steiner N      give up after adding N points (exit status 1; default 50 per input
+                       vertex, at least 20000)
   --fill RULE          which regions form the domain:
                        triangle: Triangle's rule: the convex hull minus what is reachable from
                                  outside or from a hole point without crossing a segment
@@ -116,8 +124,10 @@ void printStats(const std::string& input, const Options& opt, const Result& r,
   std::printf(" \"vertices\": %u, \"triangles\": %u, \"segments\": %u, \"steiner\": %u, "
               "\"duplicates\": %u,\n",
               s.vertices, s.triangles, s.segments, s.steiner, s.duplicates);
-  std::printf(" \"minAngle\": %.6f, \"maxAngle\": %.6f, \"nonAcute\": %u, \"obtuse\": %u,\n",
+  std::printf(" \"minAngle\": %.10g, \"maxAngle\": %.10g, \"nonAcute\": %u, \"obtuse\": %u,\n",
               s.minAngle, s.maxAngle, s.nonAcute, s.obtuse);
+  std::printf(" \"targetMet\": %s, \"certified\": %s,\n", s.targetMet ? "true" : "false",
+              s.certified ? "true" : "false");
   std::printf(" \"seconds\": {");
   double total = 0;
   for (size_t i = 0; i < phases.size(); ++i) {
@@ -176,12 +186,34 @@ int main(int argc, char** argv) {
         formats.push_back(f);
       }
     } else if (a == "--mode") {
-      if (!value(v)) return usageError("--mode needs delaunay or cdt");
+      if (!value(v)) return usageError("--mode needs delaunay, cdt, acute, nonobtuse or quality");
       if (v == "delaunay") opt.mode = Mode::Delaunay;
       else if (v == "cdt") opt.mode = Mode::Cdt;
-      else if (v == "quality" || v == "nonobtuse" || v == "acute")
-        return usageError("mode '" + v + "' is not available in this version (delaunay, cdt)");
-      else return usageError("unknown mode '" + v + "' (delaunay, cdt)");
+      else if (v == "acute") opt.mode = Mode::Acute;
+      else if (v == "nonobtuse") opt.mode = Mode::NonObtuse;
+      else if (v == "quality") opt.mode = Mode::Quality;
+      else return usageError("unknown mode '" + v + "' (delaunay, cdt, acute, nonobtuse, quality)");
+    } else if (a == "--max-angle" || a == "--min-angle" || a == "--max-area") {
+      char* end = nullptr;
+      if (!value(v)) return usageError(a + " needs a number");
+      double x = std::strtod(v.c_str(), &end);
+      if (*end || v.empty() || !(x >= 0)) return usageError(a + " needs a number >= 0, not '" + v + "'");
+      if (a == "--max-angle") {
+        if (!(x > 60 && x <= 90)) return usageError("--max-angle must be above 60 and at most 90");
+        opt.maxAngle = x;
+      } else if (a == "--min-angle") {
+        if (!(x < 60)) return usageError("--min-angle must be below 60");
+        opt.minAngle = x;
+      } else {
+        opt.maxArea = x;
+      }
+    } else if (a == "--max-steiner") {
+      char* end = nullptr;
+      if (!value(v)) return usageError("--max-steiner needs a count");
+      unsigned long long x = std::strtoull(v.c_str(), &end, 10);
+      if (*end || v.empty() || x == 0 || x > 4000000000ull)
+        return usageError("--max-steiner needs a positive count, not '" + v + "'");
+      opt.maxSteiner = uint32_t(x);
     } else if (a == "--fill") {
       if (!value(v)) return usageError("--fill needs triangle, evenodd or nonzero");
       if (v == "triangle") opt.fill = FillRule::Triangle;

@@ -39,7 +39,8 @@ std::string checkInput(const Pslg& in) {
 // Copies the domain's triangles out, keeping input vertices at their indices and numbering
 // the Steiner points that are used after them.
 void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
-                 const Pslg& input, const std::vector<uint32_t>& inputOf, Mesh& mesh) {
+                 const Pslg& input, const std::vector<uint32_t>& inputOf,
+                 const std::vector<uint8_t>& freeVertex, Mesh& mesh) {
   uint32_t slots = T.triangleSlots(), total = T.vertexCount();
   uint32_t inputCount = uint32_t(inputOf.size());
   // index: store vertex -> output vertex. Input vertices keep their input index.
@@ -66,6 +67,7 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
     if (index[v] == kNone) continue;
     mesh.points[2 * size_t(index[v])] = T.pts[2 * size_t(v)];
     mesh.points[2 * size_t(index[v]) + 1] = T.pts[2 * size_t(v) + 1];
+    if (v < freeVertex.size() && freeVertex[v]) mesh.vertexKind[index[v]] = kFreeVertex;
   }
   mesh.triangles.resize(3 * size_t(triangles));
   mesh.segments.clear();
@@ -127,6 +129,32 @@ void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, S
   stats.obtuse = obtuse;
 }
 
+// Whether the refined mesh meets the target: exactly (dot-product signs) at 90 degrees, in
+// floating point for other angle bounds.
+void certify(const Options& options, Stats& stats, Result& result) {
+  bool met = true;
+  if (options.mode == Mode::Acute) {
+    met = stats.nonAcute == 0 && (options.maxAngle >= 90 || stats.maxAngle < options.maxAngle);
+    stats.certified = stats.nonAcute == 0;
+  } else if (options.mode == Mode::NonObtuse) {
+    met = stats.obtuse == 0;
+    stats.certified = met;
+  }
+  double minAngle = options.mode == Mode::Quality && options.minAngle == 0 && options.maxArea == 0
+                        ? 20
+                        : options.minAngle;
+  if (minAngle > 0 && stats.minAngle < minAngle * (1 - 1e-9)) met = false;
+  stats.targetMet = met;
+  if (!met && result.status == Status::Ok) {
+    result.status = Status::TargetNotMet;
+    uint32_t missing = options.mode == Mode::Acute       ? stats.nonAcute
+                       : options.mode == Mode::NonObtuse ? stats.obtuse
+                                                         : 0;
+    result.message = missing ? std::to_string(missing) + " triangles still miss the target"
+                             : "some triangles still miss the target";
+  }
+}
+
 }  // namespace
 
 const char* version() { return "0.1.0"; }
@@ -146,9 +174,12 @@ Result mesh(const Pslg& input, const Options& options) {
   };
   std::string bad = checkInput(input);
   if (!bad.empty()) return fail(Status::BadInput, bad);
-  if (options.mode != Mode::Delaunay && options.mode != Mode::Cdt)
-    return fail(Status::BadInput,
-                "refinement modes (quality, nonobtuse, acute) are not available in this version");
+  if (!(options.maxAngle >= 60 && options.maxAngle <= 180))
+    return fail(Status::BadInput, "maxAngle must be between 60 and 180 degrees");
+  if (!(options.minAngle >= 0 && options.minAngle < 60))
+    return fail(Status::BadInput, "minAngle must be at least 0 and below 60 degrees");
+  if (!(options.maxArea >= 0) || !std::isfinite(options.maxArea))
+    return fail(Status::BadInput, "maxArea must be a finite number >= 0");
 
   double phaseStart = 0;
   auto endPhase = [&](const char* name) {
@@ -188,7 +219,25 @@ Result mesh(const Pslg& input, const Options& options) {
       T, constrained ? input : Pslg{}, domainOptions, keepHull, stats.warnings);
   endPhase("domain");
 
-  extractMesh(T, inside, input, inputOf, result.mesh);
+  bool refining = options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
+                  options.mode == Mode::Acute;
+  std::vector<uint8_t> freeVertex;
+  if (refining) {
+    Options target = options;
+    if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0)
+      target.minAngle = 20;  // Triangle's -q default
+    T.inside = std::move(inside);
+    T.inside.resize(T.tri.size() / 3, 0);
+    step = detail::refine(T, n, target, budget, freeVertex);
+    inside = std::move(T.inside);
+    endPhase("refine");
+    if (step.status == Status::Cancelled || step.status == Status::TargetNotMet) {
+      result.status = step.status;
+      result.message = step.message;
+    }
+  }
+
+  extractMesh(T, inside, input, inputOf, freeVertex, result.mesh);
   stats.vertices = uint32_t(result.mesh.vertexCount());
   stats.triangles = uint32_t(result.mesh.triangleCount());
   stats.segments = uint32_t(result.mesh.segments.size() / 2);
@@ -196,6 +245,7 @@ Result mesh(const Pslg& input, const Options& options) {
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
   measureAngles(T, inside, stats);
+  if (refining) certify(options, stats, result);
   endPhase("output");
   stats.seconds = budget.elapsed();
   return result;

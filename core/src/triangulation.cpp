@@ -29,6 +29,7 @@ uint32_t Triangulation::newTriangle() {
     return t;
   }
   if (3 * size_t(slots_ + 1) > tri.size()) reserveTriangles(2 * size_t(slots_) + 16);
+  if (!inside.empty() && inside.size() < tri.size() / 3) inside.resize(tri.size() / 3, 0);
   return slots_++;
 }
 
@@ -42,6 +43,7 @@ void Triangulation::freeTriangle(uint32_t t) {
 }
 
 void Triangulation::setCorners(uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
+  if (touched) touched->push_back(t);
   uint32_t e = 3 * t;
   tri[e] = a;
   tri[e + 1] = b;
@@ -151,6 +153,7 @@ uint32_t Triangulation::splitTriangle(uint32_t t, uint32_t v) {
   uint32_t a = tri[e], b = tri[e + 1], c = tri[e + 2];
   EdgeAttr ab = attr(e), bc = attr(e + 1), ca = attr(e + 2);
   uint32_t t1 = newTriangle(), t2 = newTriangle();
+  if (!inside.empty()) inside[t1] = inside[t2] = inside[t];
   setCorners(t, a, b, v);
   setCorners(t1, b, c, v);
   setCorners(t2, c, a, v);
@@ -178,6 +181,12 @@ uint32_t Triangulation::splitEdge(uint32_t e, uint32_t v) {
   uint32_t a = tri[e], b = tri[e1], c = tri[e2], d = tri[f2];
   EdgeAttr ab = attr(e), ba = attr(f), bc = attr(e1), ca = attr(e2), ad = attr(f1), db = attr(f2);
   uint32_t t2 = newTriangle(), t3 = newTriangle();
+  if (!inside.empty()) {
+    // t0 and t1 now hold the two halves on c's side, t2 and t3 those on d's side.
+    uint8_t cSide = inside[t0], dSide = inside[t1];
+    inside[t0] = inside[t1] = cSide;
+    inside[t2] = inside[t3] = dSide;
+  }
   setCorners(t0, c, a, v);
   setCorners(t1, b, c, v);
   setCorners(t2, a, d, v);
@@ -216,6 +225,17 @@ bool Triangulation::inCircumcircle(uint32_t t, uint32_t p) const {
 
 bool Triangulation::mustFlip(uint32_t e) const {
   if (fixed[e]) return false;
+  if (tri[e] == kGhost || tri[next(e)] == kGhost) {
+    // A spoke to infinity between two hull edges. Where a hull edge is a segment, a rounded
+    // split point on it may bend the hull inward by an ulp; flipping the spoke would wrap a
+    // sliver triangle around that bend, so the hull is left as the segments make it.
+    auto hullEdgeFixed = [&](uint32_t t) {
+      for (uint32_t f = 3 * t; f < 3 * t + 3; ++f)
+        if (tri[f] != kGhost && tri[next(f)] != kGhost) return fixed[f] != 0;
+      return false;
+    };
+    if (hullEdgeFixed(e / 3) || hullEdgeFixed(opp[e] / 3)) return false;
+  }
   return inCircumcircle(e / 3, tri[prev(opp[e])]);
 }
 
@@ -264,6 +284,22 @@ void Triangulation::legalize(std::vector<uint32_t>& stack) {
     stack.push_back(3 * t1);
     stack.push_back(3 * t1 + 1);
   }
+}
+
+bool Triangulation::splitFixedEdge(uint32_t e, uint32_t v) {
+  uint32_t f = opp[e];
+  uint32_t a = tri[e], b = tri[next(e)], c = tri[prev(e)], d = tri[prev(f)];
+  const double* p = point(v);
+  // The four new triangles (c,a,v), (b,c,v), (a,d,v), (d,b,v) must all be counter-clockwise
+  // (ghost corners excepted: the hull may bend by a rounding at v).
+  auto ccw = [&](uint32_t x, uint32_t y) {
+    return x == kGhost || y == kGhost || orient2d(point(x), point(y), p) > 0;
+  };
+  if (!ccw(c, a) || !ccw(b, c) || !ccw(a, d) || !ccw(d, b)) return false;
+  scratch_.clear();
+  splitEdge(e, v);
+  legalizeFrom(v, scratch_);
+  return true;
 }
 
 uint32_t Triangulation::insertAt(uint32_t v, const Location& loc) {

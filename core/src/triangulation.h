@@ -47,6 +47,11 @@ class Triangulation {
   std::vector<uint32_t> segment;
   bool trackSegments = false;
   std::vector<uint32_t> vertexEdge;  // per vertex: a half-edge leaving it, kNone if unused
+  // Per triangle, kept when non-empty (refinement): 1 if the triangle is in the domain. Splits
+  // pass it to the pieces; flips never cross a fixed edge, so both sides always agree.
+  std::vector<uint8_t> inside;
+  // When set, every triangle (re)written by an insertion, flip or removal is appended here.
+  std::vector<uint32_t>* touched = nullptr;
 
   uint32_t vertexCount() const { return uint32_t(pts.size() / 2); }
   // Slots in use or on the free list; the arrays may be longer (spare capacity, kNone).
@@ -74,6 +79,12 @@ class Triangulation {
   // already at those coordinates (v then stays unconnected).
   uint32_t insert(uint32_t v, uint32_t hint);
   uint32_t insertAt(uint32_t v, const Location& loc);
+
+  // Inserts vertex v on the fixed edge of half-edge e, splitting it into two fixed pieces
+  // that keep its winding and segment, even though v (a rounded point) need not lie exactly on
+  // it; then restores Delaunay. Returns false, changing nothing, if v is not strictly inside
+  // the quadrilateral of the edge's two triangles (the split would fold them).
+  bool splitFixedEdge(uint32_t e, uint32_t v);
 
   // Flips the edge of half-edge e (which must not be fixed, and whose quadrilateral must
   // be strictly convex). Afterwards the new diagonal is half-edge 3*t0+2 / 3*t1+2.

@@ -29,9 +29,9 @@ enum class Status : int {
 enum class Mode {
   Delaunay,   // Delaunay triangulation of the vertices; segments and holes ignored
   Cdt,        // constrained Delaunay triangulation of the PSLG, restricted to its domain
-  Quality,    // (refinement modes come with the refinement module)
-  NonObtuse,
-  Acute,
+  Quality,    // refine until every angle >= minAngle (default 20) and area <= maxArea
+  NonObtuse,  // refine until every angle <= 90 degrees (exact)
+  Acute,      // refine until every angle < maxAngle (default 90, exact at 90)
 };
 
 // Which triangles of the constrained triangulation form the domain.
@@ -103,6 +103,8 @@ struct Stats {
   double minAngle = 0, maxAngle = 0;  // degrees, over all output triangles
   uint32_t nonAcute = 0;            // triangles with a corner >= 90 degrees (exact)
   uint32_t obtuse = 0;              // triangles with a corner > 90 degrees (exact)
+  bool targetMet = true;            // refinement modes: every triangle meets the target
+  bool certified = false;           // acute / non-obtuse met, checked with exact dot products
   std::vector<PhaseTime> phases;    // wall time per phase
   double seconds = 0;               // total wall time of mesh()
   std::vector<std::string> warnings;

@@ -1,0 +1,391 @@
+// Delaunay refinement toward a target: acute (every angle < maxAngle), non-obtuse (<= 90),
+// or quality (every angle >= minAngle, area <= maxArea).
+//
+// A bad triangle is repaired by the rule its worst corner calls for:
+//  - a large angle opposite a fixed edge (a subsegment): the apex lies in the subsegment's
+//    closed diametral disk, and only splitting the subsegment helps (boundary rule);
+//  - a large angle elsewhere: insert the point of slice(pq) (pq the shortest edge) farthest
+//    from all vertices, found on the Voronoi diagram near the triangle (Erten & Ungor 2.1);
+//  - a small angle or a large area: insert the circumcentre (Ruppert).
+// A Steiner point that would encroach a subsegment (lie in its closed diametral disk) or fall
+// beyond one is not inserted; the subsegment is split instead. Subsegments at an input
+// vertex are split at a power-of-two distance from it (concentric shells), so the splits
+// around a small input angle match and the triangles there come out isosceles.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "acutemesh/predicates.h"
+#include "build.h"
+
+namespace acutemesh::detail {
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+
+enum VertexRole : uint8_t { kInput, kOnSegment, kFree };
+
+struct Corner {
+  int k = -1;         // corner index in its triangle, -1 if the triangle meets the target
+  bool large = true;  // a large angle (else a small angle or too large an area)
+};
+
+double dist2(const double* a, const double* b) {
+  double dx = a[0] - b[0], dy = a[1] - b[1];
+  return dx * dx + dy * dy;
+}
+
+// Circumcentre of a, b, c (floating point, relative to a for accuracy).
+void circumcenter(const double* a, const double* b, const double* c, double* out) {
+  double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+  double d = 2 * (bx * cy - by * cx);
+  double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  out[0] = a[0] + (cy * b2 - by * c2) / d;
+  out[1] = a[1] + (bx * c2 - cx * b2) / d;
+}
+
+class Refiner {
+ public:
+  Refiner(Triangulation& T, uint32_t inputCount, const Options& options, const Budget& budget)
+      : T_(T), options_(options), budget_(budget) {
+    role_.assign(T.vertexCount(), kOnSegment);  // crossing points made by the CDT lie on segments
+    std::fill(role_.begin(), role_.begin() + inputCount, kInput);
+    acute_ = options.mode == Mode::Acute;
+    nonObtuse_ = options.mode == Mode::NonObtuse;
+    cosMax_ = std::cos(options.maxAngle * kDegree);
+    cosMin_ = std::cos(options.minAngle * kDegree);
+    uint32_t cap = options.maxSteiner ? options.maxSteiner : std::max(20000u, 50 * inputCount);
+    steinerLimit_ = T.vertexCount() + cap;
+  }
+
+  StepResult run();
+  void markFree(std::vector<uint8_t>& out) const {
+    out.resize(role_.size());
+    for (size_t v = 0; v < role_.size(); ++v) out[v] = role_[v] == kFree;
+  }
+
+ private:
+  const double* P(uint32_t v) const { return T_.point(v); }
+  Corner worstCorner(uint32_t t) const;
+  double shortestEdge2(uint32_t t) const;
+  bool repair(uint32_t t, Corner c);
+  bool splitSubsegment(uint32_t e);
+  bool insertSteiner(uint32_t from, const double* x);
+  bool relocate(uint32_t a);
+  bool starMeetsTarget(uint32_t a) const;
+  void slicePoint(uint32_t t, double* x) const;
+  uint32_t addVertex(const double* p, VertexRole role) {
+    role_.push_back(role);
+    return T_.addVertex(p[0], p[1]);
+  }
+  void dropLastVertex() {
+    T_.pts.resize(T_.pts.size() - 2);
+    T_.vertexEdge.pop_back();
+    role_.pop_back();
+  }
+
+  Triangulation& T_;
+  const Options& options_;
+  const Budget& budget_;
+  std::vector<uint8_t> role_;
+  bool acute_ = false, nonObtuse_ = false;
+  double cosMax_ = 0, cosMin_ = 1;
+  uint32_t steinerLimit_ = 0;
+  std::vector<uint32_t> touched_, cavity_, stack_;
+};
+
+// The corner that most misses the target, decided exactly where the target is 90 degrees.
+Corner Refiner::worstCorner(uint32_t t) const {
+  const uint32_t* v = &T_.tri[3 * t];
+  const double* p[3] = {P(v[0]), P(v[1]), P(v[2])};
+  if (acute_ || nonObtuse_) {
+    for (int k = 0; k < 3; ++k) {
+      double d = dot2d(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+      if (nonObtuse_ ? d < 0 : d <= 0) return {k, true};
+    }
+    if (acute_ && options_.maxAngle < 90) {
+      for (int k = 0; k < 3; ++k) {
+        const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+        double dot = (b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1]);
+        if (dot <= cosMax_ * std::sqrt(dist2(a, b) * dist2(a, c))) return {k, true};
+      }
+    }
+  }
+  if (options_.minAngle > 0) {
+    for (int k = 0; k < 3; ++k) {
+      const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+      double dot = (b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1]);
+      if (dot > cosMin_ * std::sqrt(dist2(a, b) * dist2(a, c))) return {k, false};
+    }
+  }
+  if (options_.maxArea > 0) {
+    double area = 0.5 * std::fabs(orient2d(p[0], p[1], p[2]));
+    if (area > options_.maxArea) return {0, false};
+  }
+  return {};
+}
+
+// Splits the subsegment of fixed half-edge e. Next to an input vertex the split lies at a
+// power of two from it (concentric shells); otherwise at the midpoint.
+bool Refiner::splitSubsegment(uint32_t e) {
+  uint32_t a = T_.tri[e], b = T_.tri[next(e)];
+  const double *pa = P(a), *pb = P(b);
+  double len = std::sqrt(dist2(pa, pb)), s = 0.5;
+  if ((role_[a] == kInput) != (role_[b] == kInput)) {
+    double shell = std::exp2(std::round(std::log2(len / 2)));
+    s = role_[a] == kInput ? shell / len : 1 - shell / len;
+  }
+  // The split point is rounded, so it may miss the edge; next to a sliver triangle that can
+  // put it outside the edge's quadrilateral. Other split ratios are tried then.
+  for (double ratio : {s, 0.5, 0.45, 0.55, 0.4, 0.6, 1 / 3.0, 2 / 3.0}) {
+    double m[2] = {pa[0] + ratio * (pb[0] - pa[0]), pa[1] + ratio * (pb[1] - pa[1])};
+    if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
+    uint32_t v = addVertex(m, kOnSegment);
+    if (T_.splitFixedEdge(e, v)) return true;
+    dropLastVertex();
+  }
+  return false;
+}
+
+// The point of slice(pq) farthest from all vertices, pq the shortest edge of t: the best of
+// the Voronoi vertices (circumcentres) met walking from t's circumcentre while they stay in
+// the slice; each is as far from its nearest vertex as its triangle's circumradius.
+void Refiner::slicePoint(uint32_t t, double* x) const {
+  const uint32_t* v = &T_.tri[3 * t];
+  int s = 0;
+  for (int k = 1; k < 3; ++k)
+    if (dist2(P(v[(k + 1) % 3]), P(v[(k + 2) % 3])) < dist2(P(v[(s + 1) % 3]), P(v[(s + 2) % 3])))
+      s = k;
+  const double *p = P(v[(s + 1) % 3]), *q = P(v[(s + 2) % 3]);
+  double center[2];
+  circumcenter(P(v[0]), P(v[1]), P(v[2]), center);
+  double radius2 = dist2(center, p);
+  double ux = q[0] - p[0], uy = q[1] - p[1], len2 = ux * ux + uy * uy;
+  auto inSlice = [&](const double* c) {
+    double along = (c[0] - p[0]) * ux + (c[1] - p[1]) * uy;
+    return along > 0 && along < len2 && dist2(c, center) < radius2;
+  };
+  x[0] = center[0], x[1] = center[1];
+  double best = radius2;
+  // Breadth-first over a small neighbourhood of triangles whose circumcentres lie in the slice.
+  uint32_t ring[64];
+  size_t head = 0, count = 0;
+  ring[count++] = t;
+  while (head < count) {
+    uint32_t u = ring[head++];
+    for (uint32_t e = 3 * u; e < 3 * u + 3; ++e) {
+      uint32_t n = T_.opp[e] / 3;
+      if (T_.isFixed(e) || !T_.inside[n] || T_.isGhost(n) || count == 64) continue;
+      if (std::find(ring, ring + count, n) != ring + count) continue;
+      const uint32_t* w = &T_.tri[3 * n];
+      double c[2];
+      circumcenter(P(w[0]), P(w[1]), P(w[2]), c);
+      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !inSlice(c)) continue;
+      ring[count++] = n;
+      double r2 = dist2(c, P(w[0]));
+      if (r2 > best) best = r2, x[0] = c[0], x[1] = c[1];
+    }
+  }
+}
+
+// Inserts x, found for triangle `from` (x lies in its circumdisk), unless it encroaches a
+// subsegment or lies beyond one: then that subsegment is split instead.
+bool Refiner::insertSteiner(uint32_t from, const double* x) {
+  if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
+  // The cavity: triangles reachable from `from` without crossing a fixed edge whose
+  // circumcircle holds x. Fixed edges on its rim are the subsegments x could encroach.
+  cavity_.assign(1, from);
+  uint32_t encroached = kNone, beyond = kNone;
+  double encroachedLen = -1;
+  for (size_t i = 0; i < cavity_.size(); ++i) {
+    uint32_t t = cavity_[i];
+    for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+      uint32_t n = T_.opp[e] / 3;
+      const double *a = P(T_.tri[e]), *b = P(T_.tri[next(e)]);
+      if (T_.isFixed(e)) {
+        bool inDisk = dot2d(x, a, b) <= 0;
+        if (inDisk && dist2(a, b) > encroachedLen) encroached = e, encroachedLen = dist2(a, b);
+        if (orient2d(a, b, x) < 0 && beyond == kNone) beyond = e;
+        continue;
+      }
+      if (T_.isGhost(n) || std::find(cavity_.begin(), cavity_.end(), n) != cavity_.end())
+        continue;
+      const uint32_t* w = &T_.tri[3 * n];
+      if (incircle(P(w[0]), P(w[1]), P(w[2]), x) > 0) cavity_.push_back(n);
+    }
+    if (cavity_.size() > 256) break;
+  }
+  if (encroached != kNone) return splitSubsegment(encroached);
+  Location loc = T_.locate(x, from);
+  if (loc.where == Where::Failed || loc.where == Where::OnVertex) return false;
+  bool reachable = std::find(cavity_.begin(), cavity_.end(), loc.tri) != cavity_.end();
+  if (!reachable || !T_.inside[loc.tri] || T_.isGhost(loc.tri)) {
+    if (beyond != kNone) return splitSubsegment(beyond);
+    return false;
+  }
+  if (loc.where == Where::OnEdge && T_.isFixed(loc.edge)) return splitSubsegment(loc.edge);
+  uint32_t v = addVertex(x, kFree);
+  if (T_.insertAt(v, loc) != v) {
+    dropLastVertex();
+    return false;
+  }
+  return true;
+}
+
+// Every triangle around vertex a meets the target.
+bool Refiner::starMeetsTarget(uint32_t a) const {
+  uint32_t e0 = T_.vertexEdge[a], e = e0;
+  do {
+    if (worstCorner(e / 3).k >= 0) return false;
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  return true;
+}
+
+// Moves free vertex a (seed 2.2) to a point where every triangle of its star meets the
+// target, keeping the star's topology: the point must lie in the kernel of a's link and in
+// the slab of each link edge (angles at the link vertices below 90), outside each link edge's
+// diametral disk (angle at a below 90). The slabs and the kernel are half-planes: their
+// intersection is a convex polygon, clipped here; its centroid and points between it and the
+// corners are tried, and the first whose star passes the exact test is kept.
+bool Refiner::relocate(uint32_t a) {
+  if (role_[a] != kFree) return false;
+  uint32_t e0 = T_.vertexEdge[a], e = e0;
+  std::vector<uint32_t>& ring = stack_;
+  ring.clear();
+  do {
+    if (T_.isGhost(e / 3) || T_.isFixed(e) || !T_.inside[e / 3]) return false;
+    ring.push_back(T_.tri[next(e)]);
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  // Start from the link's bounding box and clip by 3 half-planes per link edge x->y:
+  // (p-x).(y-x) > 0, (p-y).(x-y) > 0, and p left of x->y.
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (uint32_t v : ring)
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], P(v)[k]), hi[k] = std::max(hi[k], P(v)[k]);
+  std::vector<std::array<double, 2>> poly = {{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}}, next;
+  auto clip = [&](double nx, double ny, double c) {  // keep n.p > c
+    next.clear();
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const auto &p = poly[i], &q = poly[(i + 1) % poly.size()];
+      double fp = nx * p[0] + ny * p[1] - c, fq = nx * q[0] + ny * q[1] - c;
+      if (fp > 0) next.push_back(p);
+      if ((fp > 0) != (fq > 0) && fp != fq) {
+        double s = fp / (fp - fq);
+        next.push_back({p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])});
+      }
+    }
+    poly.swap(next);
+  };
+  for (size_t i = 0; i < ring.size() && !poly.empty(); ++i) {
+    const double *x = P(ring[i]), *y = P(ring[(i + 1) % ring.size()]);
+    double dx = y[0] - x[0], dy = y[1] - x[1];
+    clip(dx, dy, dx * x[0] + dy * x[1]);
+    clip(-dx, -dy, -dx * y[0] - dy * y[1]);
+    clip(-dy, dx, -dy * x[0] + dx * x[1]);
+  }
+  if (poly.size() < 3) return false;
+  double centroid[2] = {0, 0};
+  for (const auto& p : poly) centroid[0] += p[0] / double(poly.size()), centroid[1] += p[1] / double(poly.size());
+  double old[2] = {P(a)[0], P(a)[1]};
+  double* where = &T_.pts[2 * size_t(a)];
+  auto tryAt = [&](double x, double y) {
+    where[0] = x, where[1] = y;
+    // The star must stay a valid triangulation (exact), and meet the target.
+    for (size_t i = 0; i < ring.size(); ++i)
+      if (orient2d(P(ring[i]), P(ring[(i + 1) % ring.size()]), where) <= 0) return false;
+    return starMeetsTarget(a);
+  };
+  if (tryAt(centroid[0], centroid[1])) return true;
+  for (double w : {0.5, 0.25})
+    for (const auto& p : poly)
+      if (tryAt(centroid[0] + w * (p[0] - centroid[0]), centroid[1] + w * (p[1] - centroid[1])))
+        return true;
+  where[0] = old[0], where[1] = old[1];
+  return false;
+}
+
+bool Refiner::repair(uint32_t t, Corner c) {
+  if (c.large) {
+    // First try to repair the triangle by moving one of its Steiner points (seed 2.2).
+    for (int k = 0; k < 3; ++k) {
+      uint32_t a = T_.tri[3 * t + k];
+      if (relocate(a)) {
+        uint32_t e0 = T_.vertexEdge[a], e = e0;
+        do {
+          touched_.push_back(e / 3);
+          for (uint32_t f = 3 * (e / 3); f < 3 * (e / 3) + 3; ++f) touched_.push_back(T_.opp[f] / 3);
+          e = T_.opp[prev(e)];
+        } while (e != e0);
+        return true;
+      }
+    }
+    // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
+    uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
+    if (T_.isFixed(opposite)) return splitSubsegment(opposite);
+    double x[2];
+    slicePoint(t, x);
+    return insertSteiner(t, x);
+  }
+  const uint32_t* v = &T_.tri[3 * t];
+  double x[2];
+  circumcenter(P(v[0]), P(v[1]), P(v[2]), x);
+  return insertSteiner(t, x);
+}
+
+// Size of a triangle for the processing order: its shortest edge, squared.
+double Refiner::shortestEdge2(uint32_t t) const {
+  const uint32_t* v = &T_.tri[3 * t];
+  return std::min({dist2(P(v[0]), P(v[1])), dist2(P(v[1]), P(v[2])), dist2(P(v[2]), P(v[0]))});
+}
+
+StepResult Refiner::run() {
+  // Bad triangles are repaired largest first (by shortest edge). Depth-first repair of the
+  // newest triangles instead lets refinement spiral into one spot; largest-first keeps the
+  // vertex spacing even. Entries are re-checked when popped (a triangle may have changed).
+  std::vector<std::pair<double, uint32_t>> heap;
+  auto push = [&](uint32_t t) {
+    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) {
+      heap.push_back({shortestEdge2(t), t});
+      std::push_heap(heap.begin(), heap.end());
+    }
+  };
+  for (uint32_t t = 0; t < T_.triangleSlots(); ++t) push(t);
+  uint32_t steps = 0;
+  while (!heap.empty()) {
+    if ((++steps & 255) == 0 && budget_.stop())
+      return {budget_.cancelled() ? Status::Cancelled : Status::TargetNotMet,
+              "time limit reached before every triangle met the target"};
+    if (T_.vertexCount() >= steinerLimit_)
+      return {Status::TargetNotMet, "Steiner point budget used up before every triangle met "
+                                    "the target"};
+    auto [size, t] = heap.front();
+    std::pop_heap(heap.begin(), heap.end());
+    heap.pop_back();
+    if (T_.isFree(t) || !T_.inside[t] || shortestEdge2(t) != size) continue;
+    Corner c = worstCorner(t);
+    if (c.k < 0) continue;
+    touched_.clear();
+    T_.touched = &touched_;
+    bool changed = repair(t, c);
+    T_.touched = nullptr;
+    if (!changed) continue;  // left for the certificate to count
+    std::sort(touched_.begin(), touched_.end());
+    touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+    for (uint32_t u : touched_) push(u);
+    push(t);
+  }
+  return {};
+}
+
+}  // namespace
+
+StepResult refine(Triangulation& T, uint32_t inputCount, const Options& options,
+                  const Budget& budget, std::vector<uint8_t>& freeVertex) {
+  Refiner refiner(T, inputCount, options, budget);
+  StepResult result = refiner.run();
+  refiner.markFree(freeVertex);
+  return result;
+}
+
+}  // namespace acutemesh::detail
