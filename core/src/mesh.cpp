@@ -228,7 +228,7 @@ Result mesh(const Pslg& input, const Options& options) {
       target.minAngle = 20;  // Triangle's -q default
     T.inside = std::move(inside);
     T.inside.resize(T.tri.size() / 3, 0);
-    step = detail::refine(T, n, target, budget, freeVertex);
+    step = detail::refine(T, input, target, budget, freeVertex);
     inside = std::move(T.inside);
     endPhase("refine");
     if (step.status == Status::Cancelled || step.status == Status::TargetNotMet) {

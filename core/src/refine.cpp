@@ -46,8 +46,9 @@ void circumcenter(const double* a, const double* b, const double* c, double* out
 
 class Refiner {
  public:
-  Refiner(Triangulation& T, uint32_t inputCount, const Options& options, const Budget& budget)
-      : T_(T), options_(options), budget_(budget) {
+  Refiner(Triangulation& T, const Pslg& input, const Options& options, const Budget& budget)
+      : T_(T), input_(input), options_(options), budget_(budget) {
+    uint32_t inputCount = uint32_t(input.vertexCount());
     role_.assign(T.vertexCount(), kOnSegment);  // crossing points made by the CDT lie on segments
     std::fill(role_.begin(), role_.begin() + inputCount, kInput);
     acute_ = options.mode == Mode::Acute;
@@ -56,6 +57,11 @@ class Refiner {
     cosMin_ = std::cos(options.minAngle * kDegree);
     uint32_t cap = options.maxSteiner ? options.maxSteiner : std::max(20000u, 50 * inputCount);
     steinerLimit_ = T.vertexCount() + cap;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (size_t i = 0; i < input.points.size(); ++i)
+      lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
+    double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    minEdge2_ = std::pow(diagonal * std::ldexp(1.0, -24), 2);
   }
 
   StepResult run();
@@ -85,12 +91,17 @@ class Refiner {
   }
 
   Triangulation& T_;
+  const Pslg& input_;
   const Options& options_;
   const Budget& budget_;
   std::vector<uint8_t> role_;
   bool acute_ = false, nonObtuse_ = false;
   double cosMax_ = 0, cosMin_ = 1;
   uint32_t steinerLimit_ = 0;
+  // No edge shorter than 2^-24 of the input's extent is made: refinement that would go
+  // deeper (a narrow wedge it cannot fill) stops there and leaves the triangle to the
+  // certificate, instead of spiralling into rounding noise.
+  double minEdge2_ = 0;
   std::vector<uint32_t> touched_, cavity_, stack_;
 };
 
@@ -130,15 +141,28 @@ Corner Refiner::worstCorner(uint32_t t) const {
 bool Refiner::splitSubsegment(uint32_t e) {
   uint32_t a = T_.tri[e], b = T_.tri[next(e)];
   const double *pa = P(a), *pb = P(b);
+  if (dist2(pa, pb) < 4 * minEdge2_) return false;
   double len = std::sqrt(dist2(pa, pb)), s = 0.5;
   if ((role_[a] == kInput) != (role_[b] == kInput)) {
     double shell = std::exp2(std::round(std::log2(len / 2)));
     s = role_[a] == kInput ? shell / len : 1 - shell / len;
   }
-  // The split point is rounded, so it may miss the edge; next to a sliver triangle that can
-  // put it outside the edge's quadrilateral. Other split ratios are tried then.
+  // Split points are placed on the original input segment (by their parameter along it), not
+  // between the subsegment's own rounded ends, so rounding never accumulates along a segment.
+  uint32_t seg = T_.segment[e];
+  const double *A = pa, *B = pb;
+  if (seg != kNone) {
+    A = &input_.points[2 * size_t(input_.segments[2 * size_t(seg)])];
+    B = &input_.points[2 * size_t(input_.segments[2 * size_t(seg) + 1])];
+  }
+  double ux = B[0] - A[0], uy = B[1] - A[1], u2 = ux * ux + uy * uy;
+  double ta = ((pa[0] - A[0]) * ux + (pa[1] - A[1]) * uy) / u2;
+  double tb = ((pb[0] - A[0]) * ux + (pb[1] - A[1]) * uy) / u2;
+  // A rounded split point may still miss the edge; next to a sliver triangle that can put it
+  // outside the edge's quadrilateral. Other split ratios are tried then.
   for (double ratio : {s, 0.5, 0.45, 0.55, 0.4, 0.6, 1 / 3.0, 2 / 3.0}) {
-    double m[2] = {pa[0] + ratio * (pb[0] - pa[0]), pa[1] + ratio * (pb[1] - pa[1])};
+    double t = ta + ratio * (tb - ta);
+    double m[2] = {A[0] + t * ux, A[1] + t * uy};
     if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
     uint32_t v = addVertex(m, kOnSegment);
     if (T_.splitFixedEdge(e, v)) return true;
@@ -224,6 +248,8 @@ bool Refiner::insertSteiner(uint32_t from, const double* x) {
     return false;
   }
   if (loc.where == Where::OnEdge && T_.isFixed(loc.edge)) return splitSubsegment(loc.edge);
+  for (uint32_t k = 0; k < 3; ++k)
+    if (dist2(x, P(T_.tri[3 * loc.tri + k])) < minEdge2_) return false;
   uint32_t v = addVertex(x, kFree);
   if (T_.insertAt(v, loc) != v) {
     dropLastVertex();
@@ -380,9 +406,9 @@ StepResult Refiner::run() {
 
 }  // namespace
 
-StepResult refine(Triangulation& T, uint32_t inputCount, const Options& options,
+StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
                   const Budget& budget, std::vector<uint8_t>& freeVertex) {
-  Refiner refiner(T, inputCount, options, budget);
+  Refiner refiner(T, input, options, budget);
   StepResult result = refiner.run();
   refiner.markFree(freeVertex);
   return result;

@@ -81,6 +81,19 @@ check "duplicates and zero-length segment" run 0 --no-output "$work/dup.poly"
 check "duplicate warning" stderr_has "duplicate vertices merged"
 check "zero-length warning" stderr_has "segment 3 has zero length"
 
+# --- refinement: certified acute and non-obtuse meshes, budgets --------------------------------
+check "acute A.poly" run 0 --mode acute --stats --no-output "$work/A.poly"
+check "acute certified" stdout_has '"certified": true'
+check "acute no right angle" stdout_has '"nonAcute": 0,'
+check "nonobtuse superior" run 0 --mode nonobtuse --stats --no-output "$shared/poly/superior.poly"
+check "nonobtuse certified" stdout_has '"obtuse": 0,'
+check "quality 25 degrees" run 0 --mode quality --min-angle 25 --stats --no-output "$work/A.poly"
+check "quality target met" stdout_has '"targetMet": true'
+check "budget ends early" run 1 --mode acute --max-steiner 5 --stats -o "$work/budget" "$work/A.poly"
+check "budget message" stderr_has "budget"
+check "budget still writes the best mesh" test -s "$work/budget.ele"
+check "budget stats say so" stdout_has '"targetMet": false'
+
 # --- bad input and usage: exit 2, one clear line ---------------------------------------------
 check "missing file" run 2 "$work/none.poly"
 check "missing file message" stderr_has "none.poly: cannot open"
@@ -100,7 +113,9 @@ check "unknown extension" run 2 "$work/A.txt"
 check "unknown option" run 2 --frobnicate "$work/A.poly"
 check "unknown option message" stderr_has "unknown option '--frobnicate'"
 check "unknown mode" run 2 --mode fast "$work/A.poly"
-check "refinement not yet" run 2 --mode acute "$work/A.poly"
+check "bad max angle" run 2 --mode acute --max-angle 50 "$work/A.poly"
+check "bad max angle message" stderr_has "--max-angle must be above 60"
+check "bad steiner budget" run 2 --mode acute --max-steiner x "$work/A.poly"
 check "unknown format" run 2 --format png "$work/A.poly"
 check "no input" run 2
 check "two inputs" run 2 "$work/A.poly" "$work/A.poly"
