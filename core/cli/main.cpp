@@ -124,7 +124,7 @@ void printStats(const std::string& input, const Options& opt, const Result& r,
   std::printf(" \"vertices\": %u, \"triangles\": %u, \"segments\": %u, \"steiner\": %u, "
               "\"duplicates\": %u,\n",
               s.vertices, s.triangles, s.segments, s.steiner, s.duplicates);
-  std::printf(" \"minAngle\": %.10g, \"maxAngle\": %.10g, \"nonAcute\": %u, \"obtuse\": %u,\n",
+  std::printf(" \"minAngle\": %.17g, \"maxAngle\": %.17g, \"nonAcute\": %u, \"obtuse\": %u,\n",
               s.minAngle, s.maxAngle, s.nonAcute, s.obtuse);
   std::printf(" \"targetMet\": %s, \"certified\": %s,\n", s.targetMet ? "true" : "false",
               s.certified ? "true" : "false");

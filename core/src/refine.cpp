@@ -227,7 +227,8 @@ bool Refiner::insertSteiner(uint32_t from, const double* x) {
       uint32_t n = T_.opp[e] / 3;
       const double *a = P(T_.tri[e]), *b = P(T_.tri[next(e)]);
       if (T_.isFixed(e)) {
-        bool inDisk = dot2d(x, a, b) <= 0;
+        double d = dot2d(x, a, b);
+        bool inDisk = nonObtuse_ ? d < 0 : d <= 0;  // a right angle at x is allowed then
         if (inDisk && dist2(a, b) > encroachedLen) encroached = e, encroachedLen = dist2(a, b);
         if (orient2d(a, b, x) < 0 && beyond == kNone) beyond = e;
         continue;
