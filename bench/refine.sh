@@ -1,0 +1,160 @@
+#!/usr/bin/env bash
+# `npm run bench:refine`: acute and non-obtuse refinement on the seed paper's kinds of input and
+# on the 150 CG:SHOP 2025 instances, next to the published and measured figures to beat.
+#
+#  1. installs what only this bench needs (fonts-dejavu-core for the text outlines, opentype.js
+#     through package.json's devDependencies); never a core dependency;
+#  2. builds our CLI in build/ (scripts/build.sh when build/ is not configured yet, otherwise
+#     just the acutemesh target, so tests being edited elsewhere do not block it);
+#  3. generates the inputs into bench/work/refine/ (bench/inputs/text.mjs, shapes.mjs) and
+#     notes any that differ from the committed copies in bench/inputs/data/;
+#  4. per input: `build/acutemesh --mode cdt|acute|nonobtuse --stats --no-output INPUT` (text
+#     outlines with --fill nonzero), best of $REFINE_RUNS by the CLI's own seconds.total; per
+#     CG:SHOP instance: cdt, nonobtuse and acute once. Each run's stdout, stderr and exit
+#     status are kept in bench/work/refine/runs/;
+#  5. bench/inputs/report.mjs reads them and writes bench/results/refine-YYYY-MM-DD.md (and
+#     bench/work/refine/cgshop.csv, one line per instance), then it is printed.
+#
+# A mode the CLI does not offer yet (exit 2, "not available") is probed once and shows as
+# "n/a"; the cdt rows are the plain constrained Delaunay starting point, not a refinement.
+#
+# Environment: REFINE_RUNS (default 3) runs per table input; REFINE_TIME_LIMIT (default 60) and
+# CGSHOP_TIME_LIMIT (default 10) seconds passed as --time-limit to the refinement modes (a run
+# is killed at twice that + 10 s); REFINE_QUICK=1: one run each, no CG:SHOP section.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+RUNS="${REFINE_RUNS:-3}"
+TIME_LIMIT="${REFINE_TIME_LIMIT:-60}"
+CGSHOP_LIMIT="${CGSHOP_TIME_LIMIT:-10}"
+QUICK="${REFINE_QUICK:-0}"
+if [[ "$QUICK" == 1 ]]; then RUNS=1; fi
+FONT=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+SHARED=../shared/data
+REFINE_REQUIREMENTS=(
+  "$FONT:fonts-dejavu-core"
+  "node:nodejs"
+)
+bash scripts/setup.sh  # the project's requirements and npm packages (opentype.js)
+bash scripts/setup.sh --only "${REFINE_REQUIREMENTS[@]}"
+
+jobs="$(nproc)"
+note() { echo "bench:refine: $*" >&2; }
+WORK=bench/work/refine
+RUNDIR="$WORK/runs"
+mkdir -p "$WORK" bench/results build
+rm -rf "$RUNDIR"
+mkdir -p "$RUNDIR"
+
+# --- build ------------------------------------------------------------------------------------
+have_cli=1
+if [[ ! -f build/CMakeCache.txt || ! ( -f build/Makefile || -f build/build.ninja ) ]]; then
+  note "configuring and building build/ (scripts/build.sh)"
+  bash scripts/build.sh >build/bench-refine.log 2>&1 ||
+    cmake --build build --target acutemesh -j"$jobs" >>build/bench-refine.log 2>&1 || have_cli=0
+else
+  cmake --build build --target acutemesh -j"$jobs" >build/bench-refine.log 2>&1 || have_cli=0
+fi
+if ((have_cli == 0)) || [[ ! -x build/acutemesh ]]; then
+  have_cli=0
+  note "our CLI did not build (see build/bench-refine.log); every row will be n/a"
+fi
+
+# --- inputs -----------------------------------------------------------------------------------
+# id | label | file | extra CLI arguments | reference key (report.mjs) | generator
+CASES=(
+  "acute-text|\"Acute\" (DejaVu Sans outline)|$WORK/acute-text.json|--fill nonzero|acute-text|text Acute"
+  "acutemesh-text|\"acutemesh\" (DejaVu Sans outline)|$WORK/acutemesh-text.json|--fill nonzero||text acutemesh"
+  "A|A.poly (Triangle's letter A)|$SHARED/poly/A.poly||A|"
+  "superior|superior.poly (Lake Superior, 6 islands)|$SHARED/poly/superior.poly||superior|"
+  "random|Random: 1000 uniform points + 4 corners|$WORK/random.node||random|shapes random"
+  "plate|plate: 3 round holes and a slot|$WORK/plate.poly||plate|shapes plate"
+  "naca0012|NACA 0012 airfoil in a far-field box|$WORK/naca0012.poly|||shapes naca"
+)
+: >"$WORK/inputs-differ.txt"
+: >"$WORK/cases.txt"
+for c in "${CASES[@]}"; do
+  IFS='|' read -r id label file args ref gen <<<"$c"
+  if [[ -n "$gen" ]]; then
+    read -r kind arg <<<"$gen"
+    if [[ "$kind" == text ]]; then
+      node bench/inputs/text.mjs "$arg" "$file.tmp" "$FONT"
+    else
+      node bench/inputs/shapes.mjs "$arg" "$file.tmp"
+    fi
+    mv "$file.tmp" "$file"
+    committed="bench/inputs/data/$(basename "$file")"
+    if [[ -f "$committed" ]] && ! cmp -s "$file" "$committed"; then
+      note "$file differs from $committed (another font version?)"
+      echo "$(basename "$file")" >>"$WORK/inputs-differ.txt"
+    fi
+  fi
+  printf '%s|%s|%s|%s|%s\n' "$id" "$label" "$file" "$args" "$ref" >>"$WORK/cases.txt"
+done
+
+# --- measuring --------------------------------------------------------------------------------
+load_start=$(cut -d' ' -f1-3 /proc/loadavg)
+
+# run_one OUT KILL_AFTER_S ARGS...: OUT.json (stdout), OUT.err, OUT.rc (124: killed by timeout)
+run_one() {
+  local out="$1" kill_after="$2" rc=0
+  shift 2
+  timeout "$kill_after" ./build/acutemesh "$@" >"$out.json" 2>"$out.err" </dev/null || rc=$?
+  echo "$rc" >"$out.rc"
+}
+
+# Which modes this CLI offers: a mode it rejects with exit 2 on A.poly is "not available".
+: >"$RUNDIR/modes.tsv"
+for mode in cdt acute nonobtuse; do
+  state=available
+  if ((have_cli)); then
+    run_one "$RUNDIR/probe-$mode" 60 --mode "$mode" --stats --no-output "$SHARED/poly/A.poly"
+    if [[ "$(cat "$RUNDIR/probe-$mode.rc")" == 2 ]]; then
+      state=unavailable
+      note "mode $mode: $(head -n1 "$RUNDIR/probe-$mode.err")"
+    fi
+  else
+    state=unavailable
+  fi
+  printf '%s\t%s\t%s\n' "$mode" "$state" "$(head -n1 "$RUNDIR/probe-$mode.err" 2>/dev/null || true)" >>"$RUNDIR/modes.tsv"
+done
+available() { grep -q "^$1	available" "$RUNDIR/modes.tsv"; }
+
+while IFS='|' read -r id label file args ref; do
+  for mode in cdt acute nonobtuse; do
+    available "$mode" || continue
+    note "$id: $mode"
+    limit=()
+    [[ "$mode" == cdt ]] || limit=(--time-limit "$TIME_LIMIT")
+    for ((k = 1; k <= RUNS; k++)); do
+      # shellcheck disable=SC2086  # args: a few words, no spaces inside
+      run_one "$RUNDIR/$id.$mode.$k" $((2 * TIME_LIMIT + 10)) --mode "$mode" "${limit[@]}" $args \
+        --stats --no-output "$file"
+    done
+  done
+done <"$WORK/cases.txt"
+
+cgshop_dir=""
+if [[ "$QUICK" != 1 && -d "$SHARED/cgshop2025" ]]; then
+  cgshop_dir="$SHARED/cgshop2025"
+  mkdir -p "$RUNDIR/cgshop"
+  for mode in cdt nonobtuse acute; do
+    available "$mode" || continue
+    note "CG:SHOP 2025, 150 instances: $mode"
+    limit=()
+    [[ "$mode" == cdt ]] || limit=(--time-limit "$CGSHOP_LIMIT")
+    for f in "$cgshop_dir"/*.instance.json; do
+      run_one "$RUNDIR/cgshop/$(basename "$f" .instance.json).$mode" $((2 * CGSHOP_LIMIT + 10)) \
+        --mode "$mode" "${limit[@]}" --stats --no-output "$f"
+    done
+  done
+fi
+
+# --- report -----------------------------------------------------------------------------------
+out="bench/results/refine-$(date +%F).md"
+LOAD_START="$load_start" RUNS="$RUNS" TIME_LIMIT="$TIME_LIMIT" CGSHOP_LIMIT="$CGSHOP_LIMIT" \
+  node bench/inputs/report.mjs --work "$WORK" --cgshop "$cgshop_dir" --out "$out"
+echo
+cat "$out"
+echo
+echo "bench:refine: wrote $out (per instance: $WORK/cgshop.csv)"
