@@ -76,8 +76,10 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
     if (!inside[t]) continue;
     for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
       *out++ = index[T.tri[e]];
-      // A fixed edge is reported once, from an inside triangle.
-      if (T.fixed[e] && (!inside[T.opp[e] / 3] || e < T.opp[e])) {
+      // A fixed edge on an input segment is reported once, from an inside triangle. (Hull
+      // edges fixed for refinement lie on no segment.)
+      bool onSegment = T.fixed[e] && (T.segment.empty() || T.segment[e] != kNone);
+      if (onSegment && (!inside[T.opp[e] / 3] || e < T.opp[e])) {
         mesh.segments.push_back(index[T.tri[e]]);
         mesh.segments.push_back(index[T.tri[detail::next(e)]]);
       }

@@ -62,6 +62,11 @@ class Refiner {
       lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
     double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
     minEdge2_ = std::pow(diagonal * std::ldexp(1.0, -24), 2);
+    // Where the domain ends at an edge no segment lies on (point sets, --convex-hull), the
+    // edge is a boundary all the same: fix it (with no segment) so the boundary rule applies.
+    for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e)
+      if (!T.isFree(e / 3) && T.inside[e / 3] && !T.isFixed(e) && !T.inside[T.opp[e] / 3])
+        T.fixEdge(e, 0);
   }
 
   StepResult run();

@@ -182,3 +182,25 @@ TEST(Refine, CgshopInstancesStayValidAndMostAreSolved) {
   // aCute solves 60 of 150 (58 by the exact check); this guards today's 72 from regressing.
   EXPECT_GE(solved, 72u);
 }
+
+// Found with the bench's random points: with no segments, the hull edges were no boundary
+// for the refinement, so circumcentres outside the hull left obtuse triangles behind.
+TEST(Refine, PointSetsAreRefinedUpToTheirHull) {
+  Pslg in;
+  uint64_t state = 7;
+  for (int i = 0; i < 300; ++i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    in.points.push_back(double(state >> 40) / double(1 << 24));
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    in.points.push_back(double(state >> 40) / double(1 << 24));
+  }
+  Options o;
+  o.mode = Mode::Acute;
+  Result r = mesh(in, o);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+  expectValid(in, o, r, "random points");
+  size_t nonAcute, obtuse;
+  countCorners(r.mesh, &nonAcute, &obtuse);
+  EXPECT_EQ(nonAcute, 0u);
+  EXPECT_TRUE(r.mesh.segments.empty());  // hull edges lie on no input segment
+}
