@@ -58,8 +58,8 @@ std::vector<uint8_t> classifyDomain(const Triangulation& T, const Pslg& input,
                                     std::vector<std::string>& warnings);
 
 // Refines T (with T.inside set to the domain) toward options' target: acute / non-obtuse /
-// quality. The vertices it adds inside the domain are marked in freeVertex (the rest lie on
-// input segments). Returns TargetNotMet or Cancelled when a budget
+// quality. The vertices it adds on no input segment are marked in freeVertex (the rest lie
+// on input segments). Returns TargetNotMet or Cancelled when a budget
 // stops it; triangles it could not repair are left for the caller's certificate to count.
 StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
                   const Budget& budget, std::vector<uint8_t>& freeVertex);

@@ -23,7 +23,9 @@ namespace {
 
 constexpr double kDegree = M_PI / 180.0;
 
-enum VertexRole : uint8_t { kInput, kOnSegment, kFree };
+// kOnHull: on a boundary edge no segment lies on (hull of a point set); kept in place like
+// kOnSegment, reported like kFree (no input segment holds it).
+enum VertexRole : uint8_t { kInput, kOnSegment, kOnHull, kFree };
 
 struct Corner {
   int k = -1;         // corner index in its triangle, -1 if the triangle meets the target
@@ -72,7 +74,7 @@ class Refiner {
   StepResult run();
   void markFree(std::vector<uint8_t>& out) const {
     out.resize(role_.size());
-    for (size_t v = 0; v < role_.size(); ++v) out[v] = role_[v] == kFree;
+    for (size_t v = 0; v < role_.size(); ++v) out[v] = role_[v] == kFree || role_[v] == kOnHull;
   }
 
  private:
@@ -169,7 +171,7 @@ bool Refiner::splitSubsegment(uint32_t e) {
     double t = ta + ratio * (tb - ta);
     double m[2] = {A[0] + t * ux, A[1] + t * uy};
     if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
-    uint32_t v = addVertex(m, kOnSegment);
+    uint32_t v = addVertex(m, seg != kNone ? kOnSegment : kOnHull);
     if (T_.splitFixedEdge(e, v)) return true;
     dropLastVertex();
   }

@@ -87,7 +87,7 @@ enum VertexKind : uint8_t {
   kInputVertex = 0,     // copied from the input
   kUnusedVertex = 1,    // input vertex used by no triangle (duplicate, or outside the domain)
   kSegmentVertex = 2,   // Steiner point on an input segment (crossings, splits)
-  kFreeVertex = 3,      // Steiner point in the interior
+  kFreeVertex = 3,      // Steiner point on no input segment (interior, or on a point set's hull)
 };
 
 struct PhaseTime {
