@@ -845,13 +845,31 @@ class Validator {
     bool segmentOk = opt_.mode != Mode::Delaunay;
     std::vector<uint32_t> hull, hullNext;
     if (hullOk) {
-      hull = convexHull(m_.points, used_);
+      // The hull of the input vertices: refinement splits hull edges at rounded points, so
+      // the mesh's own hull may differ from it by rounding.
+      std::vector<uint8_t> usedInput = used_;
+      std::fill(usedInput.begin() + nIn_, usedInput.end(), 0);
+      hull = convexHull(m_.points, usedInput);
       hullNext.assign(n_, kNone);
       for (size_t i = 0; i < hull.size(); ++i) hullNext[hull[i]] = hull[(i + 1) % hull.size()];
     }
+    // A boundary edge with a Steiner end lies along an input hull edge A->B: each end is A, B
+    // or a Steiner point within rounding reach of the line, inside the edge's extent.
+    auto alongHullEdge = [&](uint32_t u, uint32_t v) {
+      for (size_t i = 0; i < hull.size(); ++i) {
+        uint32_t a = hull[i], b = hull[(i + 1) % hull.size()];
+        auto fits = [&](uint32_t x) {
+          return x == a || x == b ||
+                 (x >= nIn_ && nearLine(P(a), P(b), P(x)) && dot2d(P(x), P(a), P(b)) < 0);
+        };
+        if (fits(u) && fits(v)) return true;
+      }
+      return false;
+    };
     for (uint32_t h : boundary_) {
       if (segmentOk && marked_[h]) continue;
       if (hullOk && hullNext[org(h)] == dst(h)) continue;
+      if (hullOk && (org(h) >= nIn_ || dst(h) >= nIn_) && alongHullEdge(org(h), dst(h))) continue;
       log_.add("boundary edge ", org(h), "->", dst(h), " of ", tri(h / 3),
                !hullOk     ? " does not lie on an input segment"
                : segmentOk ? " lies neither on an input segment nor on the convex hull"

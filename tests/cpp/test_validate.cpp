@@ -230,6 +230,19 @@ TEST(Validate, NoSegmentsMeansTheConvexHull) {
                "vertex 3 (0, 2) is used by no triangle, but the whole convex hull");
 }
 
+// Refinement splits a point set's hull edges at rounded points: a Steiner point a rounding
+// off the hull edge is accepted on the boundary; one well inside is not.
+TEST(Validate, HullSplitPointsWithinRounding) {
+  Pslg in = square();
+  in.segments.clear();
+  double nearEdge = std::nextafter(0.0, 1.0) + 1e-300;  // (1, tiny): a rounding above y = 0
+  Mesh m = meshOf(in, {0, 4, 3, 4, 1, 2, 4, 2, 3}, {}, {1, nearEdge});
+  m.vertexKind = {0, 0, 0, 0, acutemesh::kFreeVertex};
+  EXPECT_VALID(in, m, Options{});
+  m.points[9] = 0.25;  // (1, 0.25): the boundary now dents into the square
+  EXPECT_ERROR(in, m, Options{}, "lies neither on an input segment nor on the convex hull");
+}
+
 TEST(Validate, SteinerVertexKinds) {
   // A free Steiner point in the middle of the square, and one wrongly called a segment point.
   Pslg in = square();
