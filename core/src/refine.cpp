@@ -85,6 +85,8 @@ class Refiner {
   bool splitSubsegment(uint32_t e);
   bool insertSteiner(uint32_t from, const double* x);
   bool relocate(uint32_t a);
+  bool tryRemove(uint32_t v);
+  void removeSteinerPoints();
   bool starMeetsTarget(uint32_t a) const;
   void slicePoint(uint32_t t, double* x) const;
   uint32_t addVertex(const double* p, VertexRole role) {
@@ -409,7 +411,43 @@ StepResult Refiner::run() {
     for (uint32_t u : touched_) push(u);
     push(t);
   }
+  removeSteinerPoints();
   return {};
+}
+
+// Removes free vertex v if the triangles that then fill its star all meet the target;
+// otherwise puts it back (the constrained Delaunay triangulation is unique, so its star
+// returns as it was).
+bool Refiner::tryRemove(uint32_t v) {
+  uint32_t hint = T_.vertexEdge[v] / 3;
+  touched_.clear();
+  T_.touched = &touched_;
+  bool removed = T_.removeVertex(v);
+  T_.touched = nullptr;
+  if (!removed) return false;
+  bool good = true;
+  for (uint32_t t : touched_)
+    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) good = false;
+  if (good) return true;
+  T_.insert(v, T_.isFree(hint) ? touched_.front() : hint);
+  return false;
+}
+
+// The improvement pass (after the target is met): every free Steiner point whose removal
+// keeps every triangle on target goes, newest first, until a pass removes none. This is the
+// local search that brings CG:SHOP-style counts down several times.
+void Refiner::removeSteinerPoints() {
+  for (uint32_t t = 0; t < T_.triangleSlots(); ++t)
+    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) return;
+  for (int pass = 0; pass < 4; ++pass) {
+    uint32_t removed = 0;
+    for (uint32_t v = T_.vertexCount(); v-- > 0;) {
+      if (role_[v] != kFree || T_.vertexEdge[v] == kNone) continue;
+      if ((v & 63) == 0 && budget_.stop()) return;
+      removed += tryRemove(v);
+    }
+    if (removed == 0) break;
+  }
 }
 
 }  // namespace

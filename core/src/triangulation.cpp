@@ -34,6 +34,7 @@ uint32_t Triangulation::newTriangle() {
 }
 
 void Triangulation::freeTriangle(uint32_t t) {
+  if (!inside.empty()) inside[t] = 0;
   for (int k = 0; k < 3; ++k) {
     tri[3 * t + k] = kNone;
     setAttr(3 * t + k, kPlain, false);
