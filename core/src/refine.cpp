@@ -87,6 +87,7 @@ class Refiner {
   bool relocate(uint32_t a);
   bool tryRemove(uint32_t v);
   void removeSteinerPoints();
+  StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
   void slicePoint(uint32_t t, double* x) const;
   uint32_t addVertex(const double* p, VertexRole role) {
@@ -376,6 +377,15 @@ double Refiner::shortestEdge2(uint32_t t) const {
 }
 
 StepResult Refiner::run() {
+  StepResult result = repairAll();
+  if (!result.ok()) return result;
+  // Improvement: remove what is not needed. Putting a vertex back can differ from its old
+  // star where vertices are cocircular, so whatever that spoilt is repaired again.
+  removeSteinerPoints();
+  return repairAll();
+}
+
+StepResult Refiner::repairAll() {
   // Bad triangles are repaired largest first (by shortest edge). Depth-first repair of the
   // newest triangles instead lets refinement spiral into one spot; largest-first keeps the
   // vertex spacing even. Entries are re-checked when popped (a triangle may have changed).
@@ -411,7 +421,6 @@ StepResult Refiner::run() {
     for (uint32_t u : touched_) push(u);
     push(t);
   }
-  removeSteinerPoints();
   return {};
 }
 
@@ -433,9 +442,8 @@ bool Refiner::tryRemove(uint32_t v) {
   return false;
 }
 
-// The improvement pass (after the target is met): every free Steiner point whose removal
-// keeps every triangle on target goes, newest first, until a pass removes none. This is the
-// local search that brings CG:SHOP-style counts down several times.
+// The improvement pass (once the target is met): every free Steiner point whose removal
+// keeps every triangle on target goes, newest first, until a pass removes none.
 void Refiner::removeSteinerPoints() {
   for (uint32_t t = 0; t < T_.triangleSlots(); ++t)
     if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) return;
