@@ -57,8 +57,18 @@ class Refiner {
     nonObtuse_ = options.mode == Mode::NonObtuse;
     cosMax_ = std::cos(options.maxAngle * kDegree);
     cosMin_ = std::cos(options.minAngle * kDegree);
-    uint32_t cap = options.maxSteiner ? options.maxSteiner : std::max(20000u, 50 * inputCount);
-    steinerLimit_ = T.vertexCount() + cap;
+    // Without a budget from the caller: 50 points per input vertex, at least 20000, and with
+    // an area bound room for about two triangles of that area per unit of domain area.
+    double cap = std::max(20000.0, 50.0 * inputCount);
+    if (options.maxArea > 0) {
+      double area = 0;
+      for (uint32_t t = 0; t < T.triangleSlots(); ++t)
+        if (!T.isFree(t) && T.inside[t] && !T.isGhost(t))
+          area += 0.5 * orient2d(P(T.tri[3 * t]), P(T.tri[3 * t + 1]), P(T.tri[3 * t + 2]));
+      cap += 4 * area / options.maxArea;
+    }
+    if (options.maxSteiner) cap = options.maxSteiner;
+    steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, 4.0e9));
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < input.points.size(); ++i)
       lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
@@ -379,8 +389,10 @@ double Refiner::shortestEdge2(uint32_t t) const {
 StepResult Refiner::run() {
   StepResult result = repairAll();
   if (!result.ok()) return result;
-  // Improvement: remove what is not needed. Putting a vertex back can differ from its old
-  // star where vertices are cocircular, so whatever that spoilt is repaired again.
+  // Improvement (acute / non-obtuse, where the point count is the score): remove what is not
+  // needed. Putting a vertex back can differ from its old star where vertices are
+  // cocircular, so whatever that spoilt is repaired again.
+  if (!acute_ && !nonObtuse_) return result;
   removeSteinerPoints();
   return repairAll();
 }
@@ -428,7 +440,6 @@ StepResult Refiner::repairAll() {
 // otherwise puts it back (the constrained Delaunay triangulation is unique, so its star
 // returns as it was).
 bool Refiner::tryRemove(uint32_t v) {
-  uint32_t hint = T_.vertexEdge[v] / 3;
   touched_.clear();
   T_.touched = &touched_;
   bool removed = T_.removeVertex(v);
@@ -438,7 +449,7 @@ bool Refiner::tryRemove(uint32_t v) {
   for (uint32_t t : touched_)
     if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) good = false;
   if (good) return true;
-  T_.insert(v, T_.isFree(hint) ? touched_.front() : hint);
+  T_.insert(v, touched_.back());  // the last triangle written is alive and next to v's place
   return false;
 }
 

@@ -204,3 +204,20 @@ TEST(Refine, PointSetsAreRefinedUpToTheirHull) {
   EXPECT_EQ(nonAcute, 0u);
   EXPECT_TRUE(r.mesh.segments.empty());  // hull edges lie on no input segment
 }
+
+// Found with a small --max-area: the default Steiner budget (50 per input vertex) ended the
+// run long before the area bound was met; the budget now makes room for the area asked for.
+TEST(Refine, AreaBoundGetsTheBudgetItNeeds) {
+  Pslg square;
+  square.points = {0, 0, 1, 0, 1, 1, 0, 1};
+  square.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+  Options o;
+  o.mode = Mode::Quality;
+  o.minAngle = 20;
+  o.maxArea = 2e-5;
+  Result r = mesh(square, o);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+  EXPECT_GT(r.stats.steiner, 20000u);
+  EXPECT_GE(r.stats.minAngle, 20);
+  expectValid(square, o, r, "area bound");
+}
