@@ -126,8 +126,9 @@ void printStats(const std::string& input, const Options& opt, const Result& r,
               s.vertices, s.triangles, s.segments, s.steiner, s.duplicates);
   std::printf(" \"minAngle\": %.17g, \"maxAngle\": %.17g, \"nonAcute\": %u, \"obtuse\": %u,\n",
               s.minAngle, s.maxAngle, s.nonAcute, s.obtuse);
-  std::printf(" \"targetMet\": %s, \"certified\": %s,\n", s.targetMet ? "true" : "false",
-              s.certified ? "true" : "false");
+  std::printf(" \"targetMet\": %s, \"certified\": %s, \"smallestInputAngle\": %.17g,\n",
+              s.targetMet ? "true" : "false", s.certified ? "true" : "false",
+              s.smallestInputAngle);
   std::printf(" \"seconds\": {");
   double total = 0;
   for (size_t i = 0; i < phases.size(); ++i) {

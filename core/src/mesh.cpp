@@ -131,6 +131,33 @@ void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, S
   stats.obtuse = obtuse;
 }
 
+// Smallest angle between two segments at a shared end (degrees), from the directions of the
+// segments at each vertex sorted by angle; 180 when no two segments meet.
+double smallestInputAngle(const Pslg& in) {
+  std::vector<std::pair<uint32_t, double>> ends;  // (vertex, direction of a segment from it)
+  for (size_t s = 0; s < in.segmentCount(); ++s) {
+    uint32_t a = in.segments[2 * s], b = in.segments[2 * s + 1];
+    double dx = in.points[2 * b] - in.points[2 * a], dy = in.points[2 * b + 1] - in.points[2 * a + 1];
+    if (dx == 0 && dy == 0) continue;
+    ends.push_back({a, std::atan2(dy, dx)});
+    ends.push_back({b, std::atan2(-dy, -dx)});
+  }
+  std::sort(ends.begin(), ends.end());
+  double smallest = M_PI;
+  for (size_t i = 0, j; i < ends.size(); i = j) {
+    for (j = i; j < ends.size() && ends[j].first == ends[i].first; ++j) {}
+    for (size_t k = i; k + 1 < j; ++k) {
+      double gap = ends[k + 1].second - ends[k].second;
+      if (gap > 0) smallest = std::min(smallest, gap);  // 0: the same segment twice
+    }
+    if (j - i >= 2) {
+      double wrap = ends[i].second + 2 * M_PI - ends[j - 1].second;
+      if (wrap > 0) smallest = std::min(smallest, wrap);
+    }
+  }
+  return smallest * (180.0 / M_PI);
+}
+
 // Whether the refined mesh meets the target: exactly (dot-product signs) at 90 degrees, in
 // floating point for other angle bounds.
 void certify(const Options& options, Stats& stats, Result& result) {
@@ -223,6 +250,13 @@ Result mesh(const Pslg& input, const Options& options) {
 
   bool refining = options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
                   options.mode == Mode::Acute;
+  stats.smallestInputAngle = smallestInputAngle(input);
+  double bound = 90 - stats.smallestInputAngle / 2;
+  if (options.mode == Mode::Acute && options.maxAngle < 90 && options.maxAngle <= bound)
+    stats.warnings.push_back("the smallest input angle (" + std::to_string(stats.smallestInputAngle) +
+                             " degrees) forces some angle of at least " + std::to_string(bound) +
+                             " degrees: a maximum angle of " + std::to_string(options.maxAngle) +
+                             " cannot be met");
   std::vector<uint8_t> freeVertex;
   if (refining) {
     Options target = options;

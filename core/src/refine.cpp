@@ -56,6 +56,7 @@ class Refiner {
     acute_ = options.mode == Mode::Acute;
     nonObtuse_ = options.mode == Mode::NonObtuse;
     cosMax_ = std::cos(options.maxAngle * kDegree);
+    strictMax_ = acute_ && options.maxAngle < 90;
     cosMin_ = std::cos(options.minAngle * kDegree);
     // Without a budget from the caller: 50 points per input vertex, at least 20000, and with
     // an area bound room for about two triangles of that area per unit of domain area.
@@ -97,6 +98,7 @@ class Refiner {
   bool relocate(uint32_t a);
   bool tryRemove(uint32_t v);
   void removeSteinerPoints();
+  bool anyBad() const;
   StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
   void slicePoint(uint32_t t, double* x) const;
@@ -117,6 +119,7 @@ class Refiner {
   std::vector<uint8_t> role_;
   bool acute_ = false, nonObtuse_ = false;
   double cosMax_ = 0, cosMin_ = 1;
+  bool strictMax_ = false;  // acute with a bound below 90 degrees, checked in floating point
   uint32_t steinerLimit_ = 0;
   // No edge shorter than 2^-24 of the input's extent is made: refinement that would go
   // deeper (a narrow wedge it cannot fill) stops there and leaves the triangle to the
@@ -134,7 +137,7 @@ Corner Refiner::worstCorner(uint32_t t) const {
       double d = dot2d(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
       if (nonObtuse_ ? d < 0 : d <= 0) return {k, true};
     }
-    if (acute_ && options_.maxAngle < 90) {
+    if (acute_ && strictMax_) {
       for (int k = 0; k < 3; ++k) {
         const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
         double dot = (b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1]);
@@ -387,14 +390,37 @@ double Refiner::shortestEdge2(uint32_t t) const {
 }
 
 StepResult Refiner::run() {
-  StepResult result = repairAll();
+  StepResult result;
+  bool shortOfBound = false;
+  if (strictMax_) {
+    // A bound below 90 is best effort: half the budget goes to it; if that is not enough,
+    // the rest makes the mesh acute again, so a run that falls short still ends acute and
+    // certified (exit 1) rather than half refined.
+    uint32_t fullLimit = steinerLimit_;
+    steinerLimit_ = T_.vertexCount() + (fullLimit - T_.vertexCount()) / 2;
+    result = repairAll();
+    steinerLimit_ = fullLimit;
+    if (result.status == Status::Cancelled) return result;
+    if (!result.ok() || anyBad()) {
+      shortOfBound = true;
+      strictMax_ = false;
+      result = repairAll();
+    }
+  } else {
+    result = repairAll();
+  }
   if (!result.ok()) return result;
   // Improvement (acute / non-obtuse, where the point count is the score): remove what is not
   // needed. Putting a vertex back can differ from its old star where vertices are
   // cocircular, so whatever that spoilt is repaired again.
-  if (!acute_ && !nonObtuse_) return result;
-  removeSteinerPoints();
-  return repairAll();
+  if (acute_ || nonObtuse_) {
+    removeSteinerPoints();
+    result = repairAll();
+  }
+  if (result.ok() && shortOfBound)
+    return {Status::TargetNotMet, "the bound of " + std::to_string(options_.maxAngle) +
+                                      " degrees was not reached; the mesh is acute"};
+  return result;
 }
 
 StepResult Refiner::repairAll() {
@@ -411,9 +437,13 @@ StepResult Refiner::repairAll() {
   for (uint32_t t = 0; t < T_.triangleSlots(); ++t) push(t);
   uint32_t steps = 0;
   while (!heap.empty()) {
-    if ((++steps & 255) == 0 && budget_.stop())
-      return {budget_.cancelled() ? Status::Cancelled : Status::TargetNotMet,
-              "time limit reached before every triangle met the target"};
+    if ((++steps & 255) == 0) {
+      if (budget_.stop())
+        return {budget_.cancelled() ? Status::Cancelled : Status::TargetNotMet,
+                "time limit reached before every triangle met the target"};
+      if (options_.progress && (steps & 4095) == 0)
+        options_.progress({"refine", -1, T_.vertexCount()});
+    }
     if (T_.vertexCount() >= steinerLimit_)
       return {Status::TargetNotMet, "Steiner point budget used up before every triangle met "
                                     "the target"};
@@ -455,9 +485,14 @@ bool Refiner::tryRemove(uint32_t v) {
 
 // The improvement pass (once the target is met): every free Steiner point whose removal
 // keeps every triangle on target goes, newest first, until a pass removes none.
-void Refiner::removeSteinerPoints() {
+bool Refiner::anyBad() const {
   for (uint32_t t = 0; t < T_.triangleSlots(); ++t)
-    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) return;
+    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) return true;
+  return false;
+}
+
+void Refiner::removeSteinerPoints() {
+  if (anyBad()) return;
   for (int pass = 0; pass < 4; ++pass) {
     uint32_t removed = 0;
     for (uint32_t v = T_.vertexCount(); v-- > 0;) {

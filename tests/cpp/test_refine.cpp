@@ -221,3 +221,26 @@ TEST(Refine, AreaBoundGetsTheBudgetItNeeds) {
   EXPECT_GE(r.stats.minAngle, 20);
   expectValid(square, o, r, "area bound");
 }
+
+TEST(Refine, MaxAngleBelowNinetyIsBestEffortAndStable) {
+  Pslg in = load(kShared + "/poly/superior.poly");
+  Options o;
+  o.mode = Mode::Acute;
+  o.maxAngle = 85;  // above the input's bound of 90 - 12.2 / 2 = 83.9: reachable
+  Result r = mesh(in, o);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+  EXPECT_LT(r.stats.maxAngle, 85);
+  EXPECT_TRUE(r.stats.certified);
+  EXPECT_NEAR(r.stats.smallestInputAngle, 12.2, 0.01);
+  expectValid(in, o, r, "superior 85");
+
+  o.maxAngle = 80;  // below the bound: said so, and the result still ends acute
+  r = mesh(in, o);
+  EXPECT_EQ(r.status, Status::TargetNotMet);
+  ASSERT_FALSE(r.stats.warnings.empty());
+  EXPECT_NE(r.stats.warnings.back().find("cannot be met"), std::string::npos);
+  size_t nonAcute, obtuse;
+  countCorners(r.mesh, &nonAcute, &obtuse);
+  EXPECT_EQ(nonAcute, 0u);
+  expectValid(in, o, r, "superior 80");
+}

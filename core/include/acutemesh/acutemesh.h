@@ -55,7 +55,7 @@ struct Pslg {
 };
 
 struct Progress {
-  const char* phase;     // "delaunay", "constrain", "domain", ...
+  const char* phase;     // "delaunay", "segments", "domain", "refine", "output"
   double fraction;       // 0..1 within the phase, or -1 when unknown
   uint32_t vertices;     // current vertex count
 };
@@ -70,7 +70,9 @@ struct Options {
   uint32_t maxSteiner = 0;        // Steiner point budget (0 = unlimited)
   double timeLimit = 0.0;         // seconds (0 = unlimited)
   const std::atomic<bool>* cancel = nullptr;          // set to true to stop early
-  std::function<void(const Progress&)> progress;      // called now and then from long runs
+  // Called at the end of each phase and now and then during refinement (from the thread
+  // running mesh()); keep it cheap.
+  std::function<void(const Progress&)> progress;
 };
 
 struct Mesh {
@@ -105,6 +107,9 @@ struct Stats {
   uint32_t obtuse = 0;              // triangles with a corner > 90 degrees (exact)
   bool targetMet = true;            // refinement modes: every triangle meets the target
   bool certified = false;           // acute / non-obtuse met, checked with exact dot products
+  // Smallest angle between two input segments at a vertex (degrees; 180 when no two segments
+  // meet). No mesh has all angles below 90 - smallestInputAngle / 2.
+  double smallestInputAngle = 180;
   std::vector<PhaseTime> phases;    // wall time per phase
   double seconds = 0;               // total wall time of mesh()
   std::vector<std::string> warnings;
