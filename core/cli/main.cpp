@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <unistd.h>
 #include <string>
 #include <vector>
 
@@ -257,7 +258,22 @@ int main(int argc, char** argv) {
                       "\"points_x\"), and " + input + " is not one");
   if (!fillGiven && in.hasRings) opt.fill = FillRule::EvenOdd;
 
+  // On a terminal, runs longer than a second show where they are, on one stderr line.
+  bool progressShown = false;
+  if (isatty(fileno(stderr))) {
+    opt.progress = [&](const Progress& p) {
+      double elapsed = secondsSince(t0);
+      if (elapsed < 1) return;
+      if (p.vertices)
+        std::fprintf(stderr, "\racutemesh: %-9s %10u vertices %8.1f s", p.phase, p.vertices, elapsed);
+      else
+        std::fprintf(stderr, "\racutemesh: %-9s %19s %8.1f s", p.phase, "", elapsed);
+      std::fflush(stderr);
+      progressShown = true;
+    };
+  }
   Result r = mesh(in.pslg, opt);
+  if (progressShown) std::fprintf(stderr, "\r%60s\r", "");
   for (const PhaseTime& p : r.stats.phases) phases.push_back(p);
   std::vector<std::string> warnings = in.warnings;
   warnings.insert(warnings.end(), r.stats.warnings.begin(), r.stats.warnings.end());
