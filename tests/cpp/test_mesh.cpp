@@ -3,27 +3,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <dirent.h>
 #include <random>
 #include <string>
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
 #include "acutemesh/predicates.h"
+#include "fixtures.h"
 
 using namespace acutemesh;
 
 namespace {
 
-const std::string kData = ACUTEMESH_TEST_DATA;
-const std::string kShared = ACUTEMESH_SHARED_DATA;
-
-Input load(const std::string& path) {
-  Input in;
-  ParseResult r = readInputFile(path, in);
-  EXPECT_TRUE(r.ok) << r.message;
-  return in;
-}
+using fixtures::cgshopInstances;
+using fixtures::kData;
+using fixtures::kShared;
+using fixtures::load;
 
 double meshArea(const Mesh& m) {
   double area = 0;
@@ -92,24 +87,7 @@ const char* kTransformNames[] = {"rot90", "rot180", "rot270", "mirror", "scale2^
 
 void expectValid(const Pslg& in, const Options& options, const Result& r, const std::string& what) {
   ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
-  Validation v = validate(in, r.mesh, options);
-  std::string errors;
-  for (const std::string& e : v.errors) errors += "\n  " + e;
-  EXPECT_TRUE(v.ok) << what << errors;
-}
-
-std::vector<std::string> cgshopInstances() {
-  std::vector<std::string> files;
-  std::string dir = kShared + "/cgshop2025";
-  if (DIR* d = opendir(dir.c_str())) {
-    while (dirent* e = readdir(d)) {
-      std::string name = e->d_name;
-      if (name.size() > 14 && name.substr(name.size() - 14) == ".instance.json")
-        files.push_back(dir + "/" + name);
-    }
-    closedir(d);
-  }
-  return files;
+  EXPECT_EQ(fixtures::validationErrors(in, options, r.mesh), "") << what;
 }
 
 }  // namespace

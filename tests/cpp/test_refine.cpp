@@ -4,26 +4,22 @@
 
 #include <atomic>
 #include <cmath>
-#include <dirent.h>
 #include <string>
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
 #include "acutemesh/predicates.h"
+#include "fixtures.h"
 
 using namespace acutemesh;
 
 namespace {
 
-const std::string kData = ACUTEMESH_TEST_DATA;
-const std::string kShared = ACUTEMESH_SHARED_DATA;
+using fixtures::cgshopInstances;
+using fixtures::kData;
+using fixtures::kShared;
 
-Pslg load(const std::string& path) {
-  Input in;
-  ParseResult r = readInputFile(path, in);
-  EXPECT_TRUE(r.ok) << r.message;
-  return in.pslg;
-}
+acutemesh::Pslg load(const std::string& path) { return fixtures::load(path).pslg; }
 
 // Corners whose exact dot-product sign is <= 0 (right or obtuse) and < 0 (obtuse).
 void countCorners(const Mesh& m, size_t* nonAcute, size_t* obtuse) {
@@ -40,10 +36,7 @@ void countCorners(const Mesh& m, size_t* nonAcute, size_t* obtuse) {
 }
 
 void expectValid(const Pslg& in, const Options& o, const Result& r, const std::string& what) {
-  Validation v = validate(in, r.mesh, o);
-  std::string errors;
-  for (const std::string& e : v.errors) errors += "\n  " + e;
-  EXPECT_TRUE(v.ok) << what << errors;
+  EXPECT_EQ(fixtures::validationErrors(in, o, r.mesh), "") << what;
 }
 
 Pslg rotated90(const Pslg& in, bool mirror) {
@@ -55,20 +48,6 @@ Pslg rotated90(const Pslg& in, bool mirror) {
       (*xy)[i + 1] = mirror ? y : x;
     }
   return out;
-}
-
-std::vector<std::string> cgshopInstances() {
-  std::vector<std::string> files;
-  std::string dir = kShared + "/cgshop2025";
-  if (DIR* d = opendir(dir.c_str())) {
-    while (dirent* e = readdir(d)) {
-      std::string name = e->d_name;
-      if (name.size() > 14 && name.substr(name.size() - 14) == ".instance.json")
-        files.push_back(dir + "/" + name);
-    }
-    closedir(d);
-  }
-  return files;
 }
 
 }  // namespace
