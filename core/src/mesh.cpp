@@ -169,10 +169,7 @@ void certify(const Options& options, Stats& stats, Result& result) {
     met = stats.obtuse == 0;
     stats.certified = met;
   }
-  double minAngle = options.mode == Mode::Quality && options.minAngle == 0 && options.maxArea == 0
-                        ? 20
-                        : options.minAngle;
-  if (minAngle > 0 && stats.minAngle < minAngle * (1 - 1e-9)) met = false;
+  if (options.minAngle > 0 && stats.minAngle < options.minAngle * (1 - 1e-9)) met = false;
   stats.targetMet = met;
   if (!met && result.status == Status::Ok) {
     result.status = Status::TargetNotMet;
@@ -258,10 +255,10 @@ Result mesh(const Pslg& input, const Options& options) {
                              " degrees: a maximum angle of " + std::to_string(options.maxAngle) +
                              " cannot be met");
   std::vector<uint8_t> freeVertex;
+  Options target = options;
+  if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0)
+    target.minAngle = 20;  // Triangle's -q default
   if (refining) {
-    Options target = options;
-    if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0)
-      target.minAngle = 20;  // Triangle's -q default
     T.inside = std::move(inside);
     T.inside.resize(T.tri.size() / 3, 0);
     step = detail::refine(T, input, target, budget, freeVertex);
@@ -281,7 +278,7 @@ Result mesh(const Pslg& input, const Options& options) {
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
   measureAngles(T, inside, stats);
-  if (refining) certify(options, stats, result);
+  if (refining) certify(target, stats, result);
   endPhase("output");
   stats.seconds = budget.elapsed();
   return result;

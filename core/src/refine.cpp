@@ -125,7 +125,7 @@ class Refiner {
   // deeper (a narrow wedge it cannot fill) stops there and leaves the triangle to the
   // certificate, instead of spiralling into rounding noise.
   double minEdge2_ = 0;
-  std::vector<uint32_t> touched_, cavity_, stack_;
+  std::vector<uint32_t> touched_, cavity_, ring_;
 };
 
 // The corner that most misses the target, decided exactly where the target is 90 degrees.
@@ -301,7 +301,7 @@ bool Refiner::starMeetsTarget(uint32_t a) const {
 bool Refiner::relocate(uint32_t a) {
   if (role_[a] != kFree) return false;
   uint32_t e0 = T_.vertexEdge[a], e = e0;
-  std::vector<uint32_t>& ring = stack_;
+  std::vector<uint32_t>& ring = ring_;
   ring.clear();
   do {
     if (T_.isGhost(e / 3) || T_.isFixed(e) || !T_.inside[e / 3]) return false;

@@ -67,7 +67,8 @@ struct Options {
   double maxAngle = 90.0;         // degrees, acute mode: every angle < maxAngle
   double minAngle = 0.0;          // degrees, quality target (0 = none)
   double maxArea = 0.0;           // area bound (0 = none)
-  uint32_t maxSteiner = 0;        // Steiner point budget (0 = unlimited)
+  uint32_t maxSteiner = 0;        // Steiner point budget (0 = automatic: 50 per input vertex,
+                                  // at least 20000, plus room for the area bound)
   double timeLimit = 0.0;         // seconds (0 = unlimited)
   const std::atomic<bool>* cancel = nullptr;          // set to true to stop early
   // Called at the end of each phase and now and then during refinement (from the thread
