@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds acutemesh and meshes the bundled letter "A" (Triangle's A.poly) with the CLI.
+# Builds acutemesh and makes a certified acute mesh of the bundled letter "A" (Triangle's A.poly).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -10,8 +10,8 @@ out=build/sample/A.1
 mkdir -p "$(dirname "$out")"
 rm -f "$out".node "$out".ele "$out".svg
 echo
-echo "$ ./build/acutemesh --mode cdt --stats --format node,ele,svg -o $out tests/data/A.poly"
-./build/acutemesh --mode cdt --stats --format node,ele,svg -o "$out" tests/data/A.poly
+echo "$ ./build/acutemesh --mode acute --stats --format node,ele,svg -o $out tests/data/A.poly"
+./build/acutemesh --mode acute --stats --format node,ele,svg -o "$out" tests/data/A.poly
 echo
 echo "Wrote:"
 for ext in node ele svg; do
