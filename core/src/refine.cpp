@@ -125,7 +125,7 @@ class Refiner {
   // deeper (a narrow wedge it cannot fill) stops there and leaves the triangle to the
   // certificate, instead of spiralling into rounding noise.
   double minEdge2_ = 0;
-  std::vector<uint32_t> touched_, cavity_, ring_;
+  std::vector<uint32_t> touched_, cavity_, ring_, hole_;
 };
 
 // The corner that most misses the target, decided exactly where the target is 90 degrees.
@@ -466,20 +466,42 @@ StepResult Refiner::repairAll() {
   return {};
 }
 
-// Removes free vertex v if the triangles that then fill its star all meet the target;
-// otherwise puts it back (the constrained Delaunay triangulation is unique, so its star
-// returns as it was).
+// Removes free vertex v if the triangles that then fill its star meet the target, or can be
+// made to by moving free vertices of theirs (relocation, as in repair). Otherwise everything
+// moved goes back and v is put back (the constrained Delaunay triangulation is unique, so its
+// star returns as it was).
 bool Refiner::tryRemove(uint32_t v) {
   touched_.clear();
   T_.touched = &touched_;
   bool removed = T_.removeVertex(v);
   T_.touched = nullptr;
   if (!removed) return false;
+  hole_ = touched_;
+  struct Moved {
+    uint32_t vertex;
+    double x, y;
+  };
+  std::vector<Moved> moved;
   bool good = true;
-  for (uint32_t t : touched_)
-    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) good = false;
+  for (uint32_t t : hole_) {
+    if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t) || worstCorner(t).k < 0) continue;
+    bool repaired = false;
+    for (uint32_t k = 0; k < 3 && !repaired; ++k) {
+      uint32_t a = T_.tri[3 * t + k];
+      Moved old{a, P(a)[0], P(a)[1]};
+      if (relocate(a)) moved.push_back(old), repaired = true;
+    }
+    if (!repaired) {
+      good = false;
+      break;
+    }
+  }
   if (good) return true;
-  T_.insert(v, touched_.back());  // the last triangle written is alive and next to v's place
+  for (size_t i = moved.size(); i-- > 0;) {
+    T_.pts[2 * size_t(moved[i].vertex)] = moved[i].x;
+    T_.pts[2 * size_t(moved[i].vertex) + 1] = moved[i].y;
+  }
+  T_.insert(v, hole_.back());  // the last triangle written is alive and next to v's place
   return false;
 }
 
