@@ -64,4 +64,11 @@ std::vector<uint8_t> classifyDomain(const Triangulation& T, const Pslg& input,
 StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
                   const Budget& budget, std::vector<uint8_t>& freeVertex);
 
+// The predicates are exact while products of coordinate differences neither overflow nor
+// underflow. rangeExponent gives the power of two to divide by when the input's largest
+// coordinate is far from 1 (beyond 2^+-64), else 0; scaleExactly multiplies by 2^exponent,
+// false if a non-zero value would become subnormal (too wide a range to scale).
+int rangeExponent(const Pslg& in);
+bool scaleExactly(std::vector<double>& xy, int exponent);
+
 }  // namespace acutemesh::detail

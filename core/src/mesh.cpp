@@ -2,6 +2,7 @@
 // then the output mesh and its figures.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
@@ -169,7 +170,8 @@ void certify(const Options& options, Stats& stats, Result& result) {
     met = stats.obtuse == 0;
     stats.certified = met;
   }
-  if (options.minAngle > 0 && stats.minAngle < options.minAngle * (1 - 1e-9)) met = false;
+  if (options.minAngle > 0 && stats.triangles > 0 && stats.minAngle < options.minAngle * (1 - 1e-9))
+    met = false;
   stats.targetMet = met;
   if (!met && result.status == Status::Ok) {
     result.status = Status::TargetNotMet;
@@ -185,7 +187,56 @@ void certify(const Options& options, Stats& stats, Result& result) {
 
 const char* version() { return "0.1.0"; }
 
+namespace {
+Result meshInRange(const Pslg& input, const Options& options);
+}  // namespace
+
+namespace detail {
+int rangeExponent(const Pslg& in) {
+  double largest = 0;
+  for (double x : in.points) largest = std::max(largest, std::fabs(x));
+  for (double x : in.holes) largest = std::max(largest, std::fabs(x));
+  if (!(largest > 0) || !std::isfinite(largest)) return 0;
+  int exponent;
+  std::frexp(largest, &exponent);
+  return exponent > 64 || exponent < -64 ? exponent : 0;
+}
+
+bool scaleExactly(std::vector<double>& xy, int exponent) {
+  for (double& x : xy) {
+    double y = std::ldexp(x, exponent);
+    if (x != 0 && std::fabs(y) < std::numeric_limits<double>::min()) return false;
+    x = y;
+  }
+  return true;
+}
+}  // namespace detail
+
+// The predicates are exact while products of coordinate differences neither overflow nor
+// underflow. Inputs far from 1 in magnitude (1e300, 1e-300) are scaled by a power of two,
+// meshed, and scaled back: exact, since only exponents change.
 Result mesh(const Pslg& input, const Options& options) {
+  int exponent = input.points.size() % 2 ? 0 : detail::rangeExponent(input);
+  if (exponent == 0) return meshInRange(input, options);
+  Pslg scaled = input;
+  if (!detail::scaleExactly(scaled.points, -exponent) ||
+      !detail::scaleExactly(scaled.holes, -exponent)) {
+    Result r;
+    r.status = Status::BadInput;
+    r.message = "coordinates span too many orders of magnitude (up to 2^" +
+                std::to_string(exponent) + " and down to below 2^" +
+                std::to_string(exponent - 1022) + ") to be meshed exactly";
+    return r;
+  }
+  Options scaledOptions = options;
+  scaledOptions.maxArea = std::ldexp(options.maxArea, -2 * exponent);
+  Result r = meshInRange(scaled, scaledOptions);
+  detail::scaleExactly(r.mesh.points, exponent);
+  return r;
+}
+
+namespace {
+Result meshInRange(const Pslg& input, const Options& options) {
   Result result;
   Stats& stats = result.stats;
   Budget budget(options);
@@ -283,5 +334,7 @@ Result mesh(const Pslg& input, const Options& options) {
   stats.seconds = budget.elapsed();
   return result;
 }
+
+}  // namespace
 
 }  // namespace acutemesh

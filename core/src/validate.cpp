@@ -11,6 +11,8 @@
 #include <acutemesh/acutemesh.h>
 #include <acutemesh/predicates.h>
 
+#include "build.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -1027,6 +1029,18 @@ class Validator {
 
 Validation validate(const Pslg& input, const Mesh& mesh, const Options& options) {
   Validation result;
+  // Far from 1 (1e300, 1e-300) the predicates would overflow or underflow: check an exactly
+  // scaled copy, as mesh() meshes one.
+  int exponent = input.points.size() % 2 ? 0 : detail::rangeExponent(input);
+  if (exponent != 0) {
+    Pslg in = input;
+    Mesh m = mesh;
+    if (detail::scaleExactly(in.points, -exponent) && detail::scaleExactly(in.holes, -exponent) &&
+        detail::scaleExactly(m.points, -exponent)) {
+      Validator(in, m, options, result).run();
+      return result;
+    }
+  }
   Validator(input, mesh, options, result).run();
   return result;
 }

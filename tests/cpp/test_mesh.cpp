@@ -311,3 +311,29 @@ TEST(Mesh, RandomDegenerateLatticePslgs) {
     }
   }
 }
+
+// Found by a hostile-input smoke test: at 1e300 the predicates' products overflowed and at
+// 1e-300 they underflowed (three non-collinear points were called collinear). Such inputs
+// are now scaled by a power of two, meshed and scaled back, exactly.
+TEST(Mesh, CoordinatesFarFromOneAreScaledExactly) {
+  Input in = load(kData + "/A.poly");
+  Result base = mesh(in.pslg);
+  for (int exponent : {1000, -1000, 200, -200}) {
+    Pslg far = in.pslg;
+    for (double& x : far.points) x = std::ldexp(x, exponent);
+    for (double& x : far.holes) x = std::ldexp(x, exponent);
+    for (Mode mode : {Mode::Cdt, Mode::Acute}) {
+      Options o;
+      o.mode = mode;
+      Result r = mesh(far, o);
+      expectValid(far, o, r, "2^" + std::to_string(exponent));
+      if (mode == Mode::Cdt) EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount());
+      else EXPECT_TRUE(r.stats.certified);
+    }
+  }
+  Pslg spread;
+  spread.points = {0, 0, 1e300, 0, 0, 1e300, 1e-300, 1e-300};
+  Result r = mesh(spread);
+  EXPECT_EQ(r.status, Status::BadInput);
+  EXPECT_NE(r.message.find("orders of magnitude"), std::string::npos) << r.message;
+}
