@@ -159,6 +159,23 @@ double smallestInputAngle(const Pslg& in) {
   return smallest * (180.0 / M_PI);
 }
 
+// Reports the smallest input angle and says when it makes the target unreachable: corners
+// of that angle stay in the mesh, and they force an angle of at least 90 - angle / 2 nearby.
+void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats) {
+  stats.smallestInputAngle = smallestInputAngle(input);
+  auto degrees = [](double x) { return std::to_string(x) + " degrees"; };
+  if (target.minAngle > stats.smallestInputAngle)
+    stats.warnings.push_back("the smallest input angle (" + degrees(stats.smallestInputAngle) +
+                             ") is below the minimum angle asked for (" +
+                             degrees(target.minAngle) + "): triangles there cannot meet it");
+  double bound = 90 - stats.smallestInputAngle / 2;
+  if (target.mode == Mode::Acute && target.maxAngle < 90 && target.maxAngle <= bound)
+    stats.warnings.push_back("the smallest input angle (" + degrees(stats.smallestInputAngle) +
+                             ") forces some angle of at least " + degrees(bound) +
+                             ": a maximum angle of " + degrees(target.maxAngle) +
+                             " cannot be met");
+}
+
 // Whether the refined mesh meets the target: exactly (dot-product signs) at 90 degrees, in
 // floating point for other angle bounds.
 void certify(const Options& options, Stats& stats, Result& result) {
@@ -298,17 +315,11 @@ Result meshInRange(const Pslg& input, const Options& options) {
 
   bool refining = options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
                   options.mode == Mode::Acute;
-  stats.smallestInputAngle = smallestInputAngle(input);
-  double bound = 90 - stats.smallestInputAngle / 2;
-  if (options.mode == Mode::Acute && options.maxAngle < 90 && options.maxAngle <= bound)
-    stats.warnings.push_back("the smallest input angle (" + std::to_string(stats.smallestInputAngle) +
-                             " degrees) forces some angle of at least " + std::to_string(bound) +
-                             " degrees: a maximum angle of " + std::to_string(options.maxAngle) +
-                             " cannot be met");
-  std::vector<uint8_t> freeVertex;
   Options target = options;
   if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0)
     target.minAngle = 20;  // Triangle's -q default
+  if (refining) warnAboutInputAngles(input, target, stats);
+  std::vector<uint8_t> freeVertex;
   if (refining) {
     T.inside = std::move(inside);
     T.inside.resize(T.tri.size() / 3, 0);
