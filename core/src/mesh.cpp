@@ -204,10 +204,6 @@ void certify(const Options& options, Stats& stats, Result& result) {
 
 const char* version() { return "0.1.0"; }
 
-namespace {
-Result meshInRange(const Pslg& input, const Options& options);
-}  // namespace
-
 namespace detail {
 int rangeExponent(const Pslg& in) {
   double largest = 0;
@@ -229,30 +225,9 @@ bool scaleExactly(std::vector<double>& xy, int exponent) {
 }
 }  // namespace detail
 
-// The predicates are exact while products of coordinate differences neither overflow nor
-// underflow. Inputs far from 1 in magnitude (1e300, 1e-300) are scaled by a power of two,
-// meshed, and scaled back: exact, since only exponents change.
-Result mesh(const Pslg& input, const Options& options) {
-  int exponent = input.points.size() % 2 ? 0 : detail::rangeExponent(input);
-  if (exponent == 0) return meshInRange(input, options);
-  Pslg scaled = input;
-  if (!detail::scaleExactly(scaled.points, -exponent) ||
-      !detail::scaleExactly(scaled.holes, -exponent)) {
-    Result r;
-    r.status = Status::BadInput;
-    r.message = "coordinates span too many orders of magnitude (up to 2^" +
-                std::to_string(exponent) + " and down to below 2^" +
-                std::to_string(exponent - 1022) + ") to be meshed exactly";
-    return r;
-  }
-  Options scaledOptions = options;
-  scaledOptions.maxArea = std::ldexp(options.maxArea, -2 * exponent);
-  Result r = meshInRange(scaled, scaledOptions);
-  detail::scaleExactly(r.mesh.points, exponent);
-  return r;
-}
-
 namespace {
+
+// mesh() for coordinates within range of the predicates (see below).
 Result meshInRange(const Pslg& input, const Options& options) {
   Result result;
   Stats& stats = result.stats;
@@ -347,5 +322,29 @@ Result meshInRange(const Pslg& input, const Options& options) {
 }
 
 }  // namespace
+
+// The predicates are exact while products of coordinate differences neither overflow nor
+// underflow. Inputs far from 1 in magnitude (1e300, 1e-300) are scaled by a power of two,
+// meshed, and scaled back: exact, since only exponents change.
+Result mesh(const Pslg& input, const Options& options) {
+  int exponent = input.points.size() % 2 ? 0 : detail::rangeExponent(input);
+  if (exponent == 0) return meshInRange(input, options);
+  Pslg scaled = input;
+  if (!detail::scaleExactly(scaled.points, -exponent) ||
+      !detail::scaleExactly(scaled.holes, -exponent)) {
+    Result r;
+    r.status = Status::BadInput;
+    r.message = "coordinates span too many orders of magnitude (up to 2^" +
+                std::to_string(exponent) + " and down to below 2^" +
+                std::to_string(exponent - 1022) + ") to be meshed exactly";
+    return r;
+  }
+  Options scaledOptions = options;
+  scaledOptions.maxArea = std::ldexp(options.maxArea, -2 * exponent);
+  Result r = meshInRange(scaled, scaledOptions);
+  detail::scaleExactly(r.mesh.points, exponent);
+  return r;
+}
+
 
 }  // namespace acutemesh
