@@ -8,23 +8,7 @@
 // Coordinates are printed with the shortest text that reads back to the same double, so
 // every reader sees exactly the same input. Ids are 1-based, as Triangle writes them.
 import { writeFileSync } from 'node:fs';
-
-function mulberry32(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return (t ^ (t >>> 14)) >>> 0;
-  };
-}
-
-// Uniform double in [0, 1) with 53 random bits.
-function uniform(seed) {
-  const next = mulberry32(seed);
-  return () => ((next() >>> 5) * 67108864 + (next() >>> 6)) / 9007199254740992;
-}
+import { uniform } from './random.mjs';
 
 const [kind, nText, out, seedText] = process.argv.slice(2);
 const n = Number(nText);

@@ -13,22 +13,8 @@
 // reads back to the same double (as bench/gen.mjs does); the plate and the airfoil are rounded to
 // 6 decimals, so the files do not depend on the last bit of Math.sin / Math.sqrt.
 import { writeFileSync } from 'node:fs';
+import { uniform } from '../random.mjs';
 
-// Same generator as bench/gen.mjs: mulberry32, 53-bit uniform doubles in [0, 1).
-function mulberry32(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return (t ^ (t >>> 14)) >>> 0;
-  };
-}
-function uniform(seed) {
-  const next = mulberry32(seed);
-  return () => ((next() >>> 5) * 67108864 + (next() >>> 6)) / 9007199254740992;
-}
 
 const r6 = (v) => {
   const x = Number(v.toFixed(6));
