@@ -96,6 +96,7 @@ class Refiner {
   bool splitSubsegment(uint32_t e);
   bool insertSteiner(uint32_t from, const double* x);
   bool relocate(uint32_t a);
+  bool slide(uint32_t a);
   bool tryRemove(uint32_t v);
   void removeSteinerPoints();
   bool anyBad() const;
@@ -286,10 +287,53 @@ bool Refiner::insertSteiner(uint32_t from, const double* x) {
 bool Refiner::starMeetsTarget(uint32_t a) const {
   uint32_t e0 = T_.vertexEdge[a], e = e0;
   do {
-    if (worstCorner(e / 3).k >= 0) return false;
+    uint32_t t = e / 3;
+    if (T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) return false;
     e = T_.opp[prev(e)];
   } while (e != e0);
   return true;
+}
+
+// Moves a Steiner vertex on a segment along that segment (between its neighbours on it) to
+// where its whole star meets the target and stays a valid triangulation: the boundary's
+// counterpart of relocation. Positions are taken on the original input segment.
+bool Refiner::slide(uint32_t a) {
+  if (role_[a] != kOnSegment && role_[a] != kOnHull) return false;
+  uint32_t spokes[2], count = 0, e0 = T_.vertexEdge[a], e = e0;
+  std::vector<uint32_t>& ring = ring_;
+  ring.clear();
+  do {
+    if (T_.isGhost(e / 3)) return false;
+    if (T_.isFixed(e)) {
+      if (count == 2) return false;
+      spokes[count++] = e;
+    }
+    ring.push_back(T_.tri[next(e)]);
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  if (count != 2 || T_.segment[spokes[0]] != T_.segment[spokes[1]]) return false;
+  const double *p = P(T_.tri[next(spokes[0])]), *q = P(T_.tri[next(spokes[1])]);
+  uint32_t seg = T_.segment[spokes[0]];
+  const double *A = p, *B = q;
+  if (seg != kNone) {
+    A = &input_.points[2 * size_t(input_.segments[2 * size_t(seg)])];
+    B = &input_.points[2 * size_t(input_.segments[2 * size_t(seg) + 1])];
+  }
+  double ux = B[0] - A[0], uy = B[1] - A[1], u2 = ux * ux + uy * uy;
+  double tp = ((p[0] - A[0]) * ux + (p[1] - A[1]) * uy) / u2;
+  double tq = ((q[0] - A[0]) * ux + (q[1] - A[1]) * uy) / u2;
+  double* where = &T_.pts[2 * size_t(a)];
+  double old[2] = {where[0], where[1]};
+  for (int k : {8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14}) {
+    double t = tp + (tq - tp) * k / 16.0;
+    where[0] = A[0] + t * ux, where[1] = A[1] + t * uy;
+    bool valid = true;
+    for (size_t i = 0; i < ring.size() && valid; ++i)
+      valid = orient2d(P(ring[i]), P(ring[(i + 1) % ring.size()]), where) > 0;
+    if (valid && starMeetsTarget(a)) return true;
+  }
+  where[0] = old[0], where[1] = old[1];
+  return false;
 }
 
 // Moves free vertex a (seed 2.2) to a point where every triangle of its star meets the
@@ -489,7 +533,7 @@ bool Refiner::tryRemove(uint32_t v) {
     for (uint32_t k = 0; k < 3 && !repaired; ++k) {
       uint32_t a = T_.tri[3 * t + k];
       Moved old{a, P(a)[0], P(a)[1]};
-      if (relocate(a)) moved.push_back(old), repaired = true;
+      if (relocate(a) || slide(a)) moved.push_back(old), repaired = true;
     }
     if (!repaired) {
       good = false;
