@@ -223,3 +223,27 @@ TEST(Refine, MaxAngleBelowNinetyIsBestEffortAndStable) {
   EXPECT_EQ(nonAcute, 0u);
   expectValid(in, o, r, "superior 80");
 }
+
+// The benchmark's generated shapes (copies of bench/inputs/data: a plate with holes, an
+// airfoil in a far field, the word "Acute" in DejaVu Sans with non-zero fill), each also
+// rotated and mirrored: certified acute and non-obtuse.
+TEST(Refine, PlateAirfoilAndGlyphs) {
+  for (std::string name : {"plate.poly", "naca0012.poly", "acute-text.json"}) {
+    acutemesh::Input file = fixtures::load(kData + "/" + name);
+    for (int variant = 0; variant < 3; ++variant) {
+      Pslg in = variant == 0 ? file.pslg : rotated90(file.pslg, variant == 2);
+      for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
+        Options o;
+        o.mode = mode;
+        if (file.hasRings) o.fill = FillRule::NonZero;
+        Result r = mesh(in, o);
+        std::string what = name + " variant " + std::to_string(variant);
+        ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+        expectValid(in, o, r, what);
+        size_t nonAcute, obtuse;
+        countCorners(r.mesh, &nonAcute, &obtuse);
+        EXPECT_EQ(mode == Mode::Acute ? nonAcute : obtuse, 0u) << what;
+      }
+    }
+  }
+}
