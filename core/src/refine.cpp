@@ -97,6 +97,19 @@ class Refiner {
   bool insertSteiner(uint32_t from, const double* x);
   bool relocate(uint32_t a);
   bool slide(uint32_t a);
+  bool moveTo(uint32_t a, double x, double y);
+  // The line of input segment seg (or of p-q for a hull edge, seg == kNone). Points on a
+  // segment are made from it, by their parameter along it, never from rounded points on it,
+  // so rounding does not accumulate along a segment.
+  struct SegmentLine {
+    const double* start;
+    double ux, uy, u2;
+    double param(const double* x) const {
+      return ((x[0] - start[0]) * ux + (x[1] - start[1]) * uy) / u2;
+    }
+    void at(double t, double* out) const { out[0] = start[0] + t * ux, out[1] = start[1] + t * uy; }
+  };
+  SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
   bool tryRemove(uint32_t v);
   void removeSteinerPoints();
   bool anyBad() const;
@@ -171,22 +184,14 @@ bool Refiner::splitSubsegment(uint32_t e) {
     double shell = std::exp2(std::round(std::log2(len / 2)));
     s = role_[a] == kInput ? shell / len : 1 - shell / len;
   }
-  // Split points are placed on the original input segment (by their parameter along it), not
-  // between the subsegment's own rounded ends, so rounding never accumulates along a segment.
   uint32_t seg = T_.segment[e];
-  const double *A = pa, *B = pb;
-  if (seg != kNone) {
-    A = &input_.points[2 * size_t(input_.segments[2 * size_t(seg)])];
-    B = &input_.points[2 * size_t(input_.segments[2 * size_t(seg) + 1])];
-  }
-  double ux = B[0] - A[0], uy = B[1] - A[1], u2 = ux * ux + uy * uy;
-  double ta = ((pa[0] - A[0]) * ux + (pa[1] - A[1]) * uy) / u2;
-  double tb = ((pb[0] - A[0]) * ux + (pb[1] - A[1]) * uy) / u2;
+  SegmentLine line = segmentLine(seg, pa, pb);
+  double ta = line.param(pa), tb = line.param(pb);
   // A rounded split point may still miss the edge; next to a sliver triangle that can put it
   // outside the edge's quadrilateral. Other split ratios are tried then.
   for (double ratio : {s, 0.5, 0.45, 0.55, 0.4, 0.6, 1 / 3.0, 2 / 3.0}) {
-    double t = ta + ratio * (tb - ta);
-    double m[2] = {A[0] + t * ux, A[1] + t * uy};
+    double m[2];
+    line.at(ta + ratio * (tb - ta), m);
     if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
     uint32_t v = addVertex(m, seg != kNone ? kOnSegment : kOnHull);
     if (T_.splitFixedEdge(e, v)) return true;
@@ -294,6 +299,26 @@ bool Refiner::starMeetsTarget(uint32_t a) const {
   return true;
 }
 
+Refiner::SegmentLine Refiner::segmentLine(uint32_t seg, const double* p, const double* q) const {
+  const double *A = p, *B = q;
+  if (seg != kNone) {
+    A = &input_.points[2 * size_t(input_.segments[2 * size_t(seg)])];
+    B = &input_.points[2 * size_t(input_.segments[2 * size_t(seg) + 1])];
+  }
+  double ux = B[0] - A[0], uy = B[1] - A[1];
+  return {A, ux, uy, ux * ux + uy * uy};
+}
+
+// Puts vertex a at (x, y); true if its star (link in ring_) stays a valid triangulation
+// (exact) and meets the target there.
+bool Refiner::moveTo(uint32_t a, double x, double y) {
+  double* where = &T_.pts[2 * size_t(a)];
+  where[0] = x, where[1] = y;
+  for (size_t i = 0; i < ring_.size(); ++i)
+    if (orient2d(P(ring_[i]), P(ring_[(i + 1) % ring_.size()]), where) <= 0) return false;
+  return starMeetsTarget(a);
+}
+
 // Moves a Steiner vertex on a segment along that segment (between its neighbours on it) to
 // where its whole star meets the target and stays a valid triangulation: the boundary's
 // counterpart of relocation. Positions are taken on the original input segment.
@@ -313,26 +338,15 @@ bool Refiner::slide(uint32_t a) {
   } while (e != e0);
   if (count != 2 || T_.segment[spokes[0]] != T_.segment[spokes[1]]) return false;
   const double *p = P(T_.tri[next(spokes[0])]), *q = P(T_.tri[next(spokes[1])]);
-  uint32_t seg = T_.segment[spokes[0]];
-  const double *A = p, *B = q;
-  if (seg != kNone) {
-    A = &input_.points[2 * size_t(input_.segments[2 * size_t(seg)])];
-    B = &input_.points[2 * size_t(input_.segments[2 * size_t(seg) + 1])];
-  }
-  double ux = B[0] - A[0], uy = B[1] - A[1], u2 = ux * ux + uy * uy;
-  double tp = ((p[0] - A[0]) * ux + (p[1] - A[1]) * uy) / u2;
-  double tq = ((q[0] - A[0]) * ux + (q[1] - A[1]) * uy) / u2;
-  double* where = &T_.pts[2 * size_t(a)];
-  double old[2] = {where[0], where[1]};
+  SegmentLine line = segmentLine(T_.segment[spokes[0]], p, q);
+  double tp = line.param(p), tq = line.param(q);
+  double old[2] = {P(a)[0], P(a)[1]};
   for (int k : {8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14}) {
-    double t = tp + (tq - tp) * k / 16.0;
-    where[0] = A[0] + t * ux, where[1] = A[1] + t * uy;
-    bool valid = true;
-    for (size_t i = 0; i < ring.size() && valid; ++i)
-      valid = orient2d(P(ring[i]), P(ring[(i + 1) % ring.size()]), where) > 0;
-    if (valid && starMeetsTarget(a)) return true;
+    double x[2];
+    line.at(tp + (tq - tp) * k / 16.0, x);
+    if (moveTo(a, x[0], x[1])) return true;
   }
-  where[0] = old[0], where[1] = old[1];
+  moveTo(a, old[0], old[1]);
   return false;
 }
 
@@ -382,20 +396,12 @@ bool Refiner::relocate(uint32_t a) {
   double centroid[2] = {0, 0};
   for (const auto& p : poly) centroid[0] += p[0] / double(poly.size()), centroid[1] += p[1] / double(poly.size());
   double old[2] = {P(a)[0], P(a)[1]};
-  double* where = &T_.pts[2 * size_t(a)];
-  auto tryAt = [&](double x, double y) {
-    where[0] = x, where[1] = y;
-    // The star must stay a valid triangulation (exact), and meet the target.
-    for (size_t i = 0; i < ring.size(); ++i)
-      if (orient2d(P(ring[i]), P(ring[(i + 1) % ring.size()]), where) <= 0) return false;
-    return starMeetsTarget(a);
-  };
-  if (tryAt(centroid[0], centroid[1])) return true;
+  if (moveTo(a, centroid[0], centroid[1])) return true;
   for (double w : {0.5, 0.25})
     for (const auto& p : poly)
-      if (tryAt(centroid[0] + w * (p[0] - centroid[0]), centroid[1] + w * (p[1] - centroid[1])))
+      if (moveTo(a, centroid[0] + w * (p[0] - centroid[0]), centroid[1] + w * (p[1] - centroid[1])))
         return true;
-  where[0] = old[0], where[1] = old[1];
+  moveTo(a, old[0], old[1]);
   return false;
 }
 
