@@ -24,8 +24,9 @@ namespace {
 constexpr double kDegree = M_PI / 180.0;
 
 // kOnHull: on a boundary edge no segment lies on (hull of a point set); kept in place like
-// kOnSegment, reported like kFree (no input segment holds it).
-enum VertexRole : uint8_t { kInput, kOnSegment, kOnHull, kFree };
+// kOnSegment, reported like kFree (no input segment holds it). kArc: on the arc of a corner
+// fan (see buildCornerFans); never moved or removed.
+enum VertexRole : uint8_t { kInput, kOnSegment, kOnHull, kFree, kArc };
 
 struct Corner {
   int k = -1;         // corner index in its triangle, -1 if the triangle meets the target
@@ -53,6 +54,7 @@ class Refiner {
     uint32_t inputCount = uint32_t(input.vertexCount());
     role_.assign(T.vertexCount(), kOnSegment);  // crossing points made by the CDT lie on segments
     std::fill(role_.begin(), role_.begin() + inputCount, kInput);
+    fanCenter_.assign(T.vertexCount(), kNone);
     acute_ = options.mode == Mode::Acute;
     nonObtuse_ = options.mode == Mode::NonObtuse;
     cosMax_ = std::cos(options.maxAngle * kDegree);
@@ -83,9 +85,11 @@ class Refiner {
   }
 
   StepResult run();
+  StepResult runSteps();
   void markFree(std::vector<uint8_t>& out) const {
     out.resize(role_.size());
-    for (size_t v = 0; v < role_.size(); ++v) out[v] = role_[v] == kFree || role_[v] == kOnHull;
+    for (size_t v = 0; v < role_.size(); ++v)
+      out[v] = role_[v] == kFree || role_[v] == kOnHull || role_[v] == kArc;
   }
 
  private:
@@ -94,6 +98,9 @@ class Refiner {
   double shortestEdge2(uint32_t t) const;
   bool repair(uint32_t t, Corner c);
   bool splitSubsegment(uint32_t e);
+  bool splitChord(uint32_t e);
+  void buildCornerFans();
+  void releaseChords();
   bool insertSteiner(uint32_t from, const double* x);
   bool relocate(uint32_t a);
   bool slide(uint32_t a);
@@ -116,14 +123,21 @@ class Refiner {
   StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
   void slicePoint(uint32_t t, double* x) const;
-  uint32_t addVertex(const double* p, VertexRole role) {
+  uint32_t addVertex(const double* p, VertexRole role, uint32_t fanCenter = kNone) {
     role_.push_back(role);
+    fanCenter_.push_back(fanCenter);
     return T_.addVertex(p[0], p[1]);
   }
   void dropLastVertex() {
     T_.pts.resize(T_.pts.size() - 2);
     T_.vertexEdge.pop_back();
     role_.pop_back();
+    fanCenter_.pop_back();
+  }
+  // A chord of a corner fan: a fixed edge between two points of the same fan.
+  bool isChord(uint32_t e) const {
+    uint32_t c = fanCenter_[T_.tri[e]];
+    return c != kNone && c == fanCenter_[T_.tri[next(e)]];
   }
 
   Triangulation& T_;
@@ -131,6 +145,10 @@ class Refiner {
   const Options& options_;
   const Budget& budget_;
   std::vector<uint8_t> role_;
+  // Per vertex: the input vertex whose corner fan it belongs to (on its arc, or where the fan
+  // meets a segment), else kNone; per fan centre, the fan's radius.
+  std::vector<uint32_t> fanCenter_;
+  std::vector<double> fanRadius_;
   bool acute_ = false, nonObtuse_ = false;
   double cosMax_ = 0, cosMin_ = 1;
   bool strictMax_ = false;  // acute with a bound below 90 degrees, checked in floating point
@@ -176,8 +194,10 @@ Corner Refiner::worstCorner(uint32_t t) const {
 // Splits the subsegment of fixed half-edge e. Next to an input vertex the split lies at a
 // power of two from it (concentric shells); otherwise at the midpoint.
 bool Refiner::splitSubsegment(uint32_t e) {
+  if (isChord(e)) return splitChord(e);
   uint32_t a = T_.tri[e], b = T_.tri[next(e)];
-  const double *pa = P(a), *pb = P(b);
+  // Copies: adding a vertex may move the coordinate array.
+  const double pa[2] = {P(a)[0], P(a)[1]}, pb[2] = {P(b)[0], P(b)[1]};
   if (dist2(pa, pb) < 4 * minEdge2_) return false;
   double len = std::sqrt(dist2(pa, pb)), s = 0.5;
   if ((role_[a] == kInput) != (role_[b] == kInput)) {
@@ -198,6 +218,135 @@ bool Refiner::splitSubsegment(uint32_t e) {
     dropLastVertex();
   }
   return false;
+}
+
+// Splits a chord of a corner fan on its arc: the fan gets one more isosceles triangle.
+bool Refiner::splitChord(uint32_t e) {
+  uint32_t a = T_.tri[e], b = T_.tri[next(e)], c = fanCenter_[a];
+  const double *pa = P(a), *pb = P(b), *pc = P(c);
+  if (dist2(pa, pb) < 4 * minEdge2_) return false;
+  double ra = std::sqrt(dist2(pa, pc)), rb = std::sqrt(dist2(pb, pc));
+  double ux = (pa[0] - pc[0]) / ra + (pb[0] - pc[0]) / rb, uy = (pa[1] - pc[1]) / ra + (pb[1] - pc[1]) / rb;
+  double scale = fanRadius_[c] / std::hypot(ux, uy);
+  double m[2] = {pc[0] + ux * scale, pc[1] + uy * scale};
+  if (!std::isfinite(m[0]) || !std::isfinite(m[1])) return false;
+  uint32_t v = addVertex(m, kArc, c);
+  if (T_.splitFixedEdge(e, v)) return true;
+  dropLastVertex();
+  return false;
+}
+
+// Corner fans. Where segments meet at a small angle, refinement alone spirals into the
+// corner: points placed in or next to the wedge encroach the short subsegments at its apex,
+// and their splits make the triangles there smaller still. So before refinement, each input
+// vertex with a domain sector under kSmallAngle between its segments gets a fan: every
+// segment at it is split at the same distance r, and every domain sector around it is cut by
+// points on the circle of radius r into isosceles triangles with apex angles of at most
+// kFanAngle (acute). The fan's outer edges (chords) are fixed while refinement runs, so the
+// fan stays as built; the rest of the domain meets no angle under 90 degrees there, and a
+// chord that must be split is split on its arc (one more spoke). r is 0.4 of the distance from
+// the vertex to its link: the fan's disk holds no other vertex or segment, its triangles are
+// Delaunay, and the fans of two vertices keep apart.
+void Refiner::buildCornerFans() {
+  constexpr double kSmallAngle = 60 * kDegree, kFanAngle = 80 * kDegree, kTwoPi = 2 * M_PI;
+  struct Spoke {
+    uint32_t to;       // the other end of the fixed edge
+    double direction;  // radians
+    bool sectorInside; // the sector from this spoke counter-clockwise to the next is in the domain
+  };
+  std::vector<Spoke> spokes;
+  // The fixed edges at v in counter-clockwise order (empty if v has none); link distance.
+  auto readStar = [&](uint32_t v, double& linkDistance) {
+    spokes.clear();
+    linkDistance = INFINITY;
+    const double* pv = P(v);
+    uint32_t e0 = T_.vertexEdge[v], e = e0;
+    do {
+      uint32_t t = e / 3;
+      bool inside = T_.inside[t] && !T_.isGhost(t);
+      if (T_.isFixed(e)) {
+        const double* pu = P(T_.tri[next(e)]);
+        spokes.push_back({T_.tri[next(e)], std::atan2(pu[1] - pv[1], pu[0] - pv[0]), inside});
+      }
+      if (!T_.isGhost(t)) {
+        const double *b = P(T_.tri[next(e)]), *c = P(T_.tri[prev(e)]);
+        double dx = c[0] - b[0], dy = c[1] - b[1];
+        double s = std::clamp(((pv[0] - b[0]) * dx + (pv[1] - b[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+        double q[2] = {b[0] + s * dx, b[1] + s * dy};
+        linkDistance = std::min(linkDistance, std::sqrt(dist2(pv, q)));
+      }
+      e = T_.opp[prev(e)];
+    } while (e != e0);
+  };
+  auto sectorAngle = [&](size_t i) {
+    if (spokes.size() == 1) return kTwoPi;
+    double a = spokes[(i + 1) % spokes.size()].direction - spokes[i].direction;
+    return a <= 0 ? a + kTwoPi : a;
+  };
+  // First every radius (from the triangulation as it is), then the fans.
+  std::vector<std::pair<uint32_t, double>> centres;
+  uint32_t inputCount = std::min(uint32_t(input_.vertexCount()), T_.vertexCount());
+  for (uint32_t v = 0; v < inputCount; ++v) {
+    if (role_[v] != kInput || T_.vertexEdge[v] == kNone) continue;
+    double link;
+    readStar(v, link);
+    bool small = false;
+    for (size_t i = 0; i < spokes.size(); ++i) small |= spokes[i].sectorInside && sectorAngle(i) < kSmallAngle;
+    if (small && std::isfinite(link) && link * link > 100 * minEdge2_) centres.push_back({v, 0.4 * link});
+  }
+  fanRadius_.assign(inputCount, 0);
+  std::vector<uint32_t> ring;
+  for (auto [v, r] : centres) {
+    double link;
+    readStar(v, link);
+    fanRadius_[v] = r;
+    const double pv[2] = {P(v)[0], P(v)[1]};
+    // Split each fixed edge at v that bounds a domain sector at distance r.
+    std::vector<uint32_t> shell(spokes.size(), kNone);
+    for (size_t i = 0; i < spokes.size(); ++i) {
+      bool bounds = spokes[i].sectorInside || spokes[(i + spokes.size() - 1) % spokes.size()].sectorInside;
+      uint32_t e = T_.findEdge(v, spokes[i].to);
+      if (!bounds || e == kNone) continue;
+      const double pu[2] = {P(spokes[i].to)[0], P(spokes[i].to)[1]};
+      SegmentLine line = segmentLine(T_.segment.empty() ? kNone : T_.segment[e], pv, pu);
+      double tv = line.param(pv), tu = line.param(pu);
+      double m[2];
+      line.at(tv + (tu - tv) * r / std::sqrt(dist2(pv, pu)), m);
+      uint32_t s = addVertex(m, T_.segment.empty() || T_.segment[e] == kNone ? kOnHull : kOnSegment, v);
+      if (T_.splitFixedEdge(e, s)) shell[i] = s;
+      else dropLastVertex();
+    }
+    // Points on the arc of each domain sector, then the chords between consecutive points.
+    for (size_t i = 0; i < spokes.size(); ++i) {
+      size_t j = (i + 1) % spokes.size();
+      if (!spokes[i].sectorInside || shell[i] == kNone || shell[j] == kNone) continue;
+      double angle = sectorAngle(i);
+      int pieces = int(std::ceil(angle / kFanAngle));
+      ring.assign(1, shell[i]);
+      for (int k = 1; k < pieces; ++k) {
+        double a = spokes[i].direction + angle * k / pieces;
+        double x[2] = {pv[0] + r * std::cos(a), pv[1] + r * std::sin(a)};
+        uint32_t w = addVertex(x, kArc, v);
+        Location loc = T_.locate(x, T_.vertexEdge[v] / 3);
+        if (loc.where == Where::InTriangle && T_.inside[loc.tri] && T_.insertAt(w, loc) == w) {
+          ring.push_back(w);
+        } else {
+          dropLastVertex();
+        }
+      }
+      ring.push_back(shell[j]);
+      for (size_t k = 0; k + 1 < ring.size(); ++k) {
+        uint32_t e = T_.findEdge(ring[k], ring[k + 1]);
+        if (e != kNone && !T_.isFixed(e)) T_.fixEdge(e, 0);
+      }
+    }
+  }
+}
+
+// Chords are fixed only while refinement runs; the output knows them as plain edges.
+void Refiner::releaseChords() {
+  for (uint32_t e = 0; e < 3 * T_.triangleSlots(); ++e)
+    if (!T_.isFree(e / 3) && T_.isFixed(e) && !T_.isGhost(e / 3) && isChord(e)) T_.unfixEdge(e);
 }
 
 // The point of slice(pq) farthest from all vertices, pq the shortest edge of t: the best of
@@ -440,6 +589,13 @@ double Refiner::shortestEdge2(uint32_t t) const {
 }
 
 StepResult Refiner::run() {
+  if (acute_ || nonObtuse_) buildCornerFans();
+  StepResult result = runSteps();
+  releaseChords();
+  return result;
+}
+
+StepResult Refiner::runSteps() {
   StepResult result;
   bool shortOfBound = false;
   if (strictMax_) {
