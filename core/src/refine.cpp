@@ -102,7 +102,9 @@ class Refiner {
   void buildCornerFans();
   void releaseChords();
   bool insertSteiner(uint32_t from, const double* x);
+  uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
   bool relocate(uint32_t a);
+  void legalizeStar(uint32_t a);
   bool slide(uint32_t a);
   bool moveTo(uint32_t a, double x, double y);
   // The line of input segment seg (or of p-q for a hull edge, seg == kNone). Points on a
@@ -157,7 +159,7 @@ class Refiner {
   // deeper (a narrow wedge it cannot fill) stops there and leaves the triangle to the
   // certificate, instead of spiralling into rounding noise.
   double minEdge2_ = 0;
-  std::vector<uint32_t> touched_, cavity_, ring_, hole_;
+  std::vector<uint32_t> touched_, cavity_, ring_, hole_, flips_;
 };
 
 // The corner that most misses the target, decided exactly where the target is 90 degrees.
@@ -249,6 +251,7 @@ bool Refiner::splitChord(uint32_t e) {
 // Delaunay, and the fans of two vertices keep apart.
 void Refiner::buildCornerFans() {
   constexpr double kSmallAngle = 60 * kDegree, kFanAngle = 80 * kDegree, kTwoPi = 2 * M_PI;
+  constexpr double kFactor = 0.4;
   struct Spoke {
     uint32_t to;       // the other end of the fixed edge
     double direction;  // radians
@@ -292,7 +295,7 @@ void Refiner::buildCornerFans() {
     readStar(v, link);
     bool small = false;
     for (size_t i = 0; i < spokes.size(); ++i) small |= spokes[i].sectorInside && sectorAngle(i) < kSmallAngle;
-    if (small && std::isfinite(link) && link * link > 100 * minEdge2_) centres.push_back({v, 0.4 * link});
+    if (small && std::isfinite(link) && link * link > 100 * minEdge2_) centres.push_back({v, kFactor * link});
   }
   fanRadius_.assign(inputCount, 0);
   std::vector<uint32_t> ring;
@@ -424,7 +427,11 @@ bool Refiner::insertSteiner(uint32_t from, const double* x) {
   bool reachable = std::find(cavity_.begin(), cavity_.end(), loc.tri) != cavity_.end();
   if (!reachable || !T_.inside[loc.tri] || T_.isGhost(loc.tri)) {
     if (beyond != kNone) return splitSubsegment(beyond);
-    return false;
+    // Relocation leaves the triangulation not quite Delaunay in places, and the cavity can
+    // then miss x: the straight walk from `from` to x decides instead.
+    uint32_t reached = kNone, crossed = firstFixedCrossed(from, x, reached);
+    if (crossed != kNone) return splitSubsegment(crossed);
+    if (reached == kNone || !T_.inside[reached] || T_.isGhost(reached)) return false;
   }
   if (loc.where == Where::OnEdge && T_.isFixed(loc.edge)) return splitSubsegment(loc.edge);
   for (uint32_t k = 0; k < 3; ++k)
@@ -435,6 +442,51 @@ bool Refiner::insertSteiner(uint32_t from, const double* x) {
     return false;
   }
   return true;
+}
+
+// Walks the straight line from the centroid of t to x: the first fixed half-edge it crosses,
+// else kNone with the triangle holding x in `reached` (kNone too if the walk meets a vertex
+// or leaves the triangulation).
+uint32_t Refiner::firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const {
+  const uint32_t* v = &T_.tri[3 * t];
+  double g[2] = {(P(v[0])[0] + P(v[1])[0] + P(v[2])[0]) / 3, (P(v[0])[1] + P(v[1])[1] + P(v[2])[1]) / 3};
+  reached = kNone;
+  uint32_t entry = kNone;
+  for (uint32_t steps = 0; steps < 4 * T_.triangleSlots(); ++steps) {
+    uint32_t exit = kNone;
+    for (uint32_t e = 3 * t; e < 3 * t + 3 && exit == kNone; ++e) {
+      if (e == entry) continue;
+      const double *a = P(T_.tri[e]), *b = P(T_.tri[next(e)]);
+      if (orient2d(a, b, x) >= 0) continue;
+      double sa = orient2d(g, x, a), sb = orient2d(g, x, b);
+      if (sa == 0 || sb == 0) return kNone;
+      if ((sa < 0) != (sb < 0)) exit = e;
+    }
+    if (exit == kNone) {
+      reached = t;
+      return kNone;
+    }
+    if (T_.isFixed(exit)) return exit;
+    entry = T_.opp[exit];
+    t = entry / 3;
+    if (T_.isGhost(t)) return kNone;
+  }
+  return kNone;
+}
+
+// Restores the Delaunay property around vertex a after it moved: otherwise a triangle whose
+// circumcircle now holds a keeps standing, and later insertions (whose cavities assume
+// Delaunay) can miss it. Flips only touch edges next to triangles that miss the target: two
+// acute triangles always meet at a locally Delaunay edge.
+void Refiner::legalizeStar(uint32_t a) {
+  std::vector<uint32_t>& stack = flips_;
+  stack.clear();
+  uint32_t e0 = T_.vertexEdge[a], e = e0;
+  do {
+    for (uint32_t f = 3 * (e / 3); f < 3 * (e / 3) + 3; ++f) stack.push_back(f);
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  T_.legalize(stack);
 }
 
 // Every triangle around vertex a meets the target.
@@ -566,6 +618,7 @@ bool Refiner::repair(uint32_t t, Corner c) {
           for (uint32_t f = 3 * (e / 3); f < 3 * (e / 3) + 3; ++f) touched_.push_back(T_.opp[f] / 3);
           e = T_.opp[prev(e)];
         } while (e != e0);
+        legalizeStar(a);
         return true;
       }
     }
