@@ -47,10 +47,18 @@ void circumcenter(const double* a, const double* b, const double* c, double* out
   out[1] = a[1] + (bx * c2 - cx * b2) / d;
 }
 
+// How a run goes about the boundary. No one way wins everywhere (see refine()).
+struct Strategy {
+  bool cutAtFeetFirst = false;  // non-obtuse: cut slivers at altitude feet before the fans
+  bool footOnSegments = false;  // non-obtuse: split an encroached subsegment at the altitude foot
+  bool fansOnlyWhereBad = false;  // fans only at small sectors that still hold a bad triangle
+};
+
 class Refiner {
  public:
-  Refiner(Triangulation& T, const Pslg& input, const Options& options, const Budget& budget)
-      : T_(T), input_(input), options_(options), budget_(budget) {
+  Refiner(Triangulation& T, const Pslg& input, const Options& options, const Budget& budget,
+          const Strategy& strategy, uint32_t steinerCap)
+      : T_(T), input_(input), options_(options), budget_(budget), strategy_(strategy) {
     uint32_t inputCount = uint32_t(input.vertexCount());
     role_.assign(T.vertexCount(), kOnSegment);  // crossing points made by the CDT lie on segments
     std::fill(role_.begin(), role_.begin() + inputCount, kInput);
@@ -71,6 +79,7 @@ class Refiner {
       cap += 4 * area / options.maxArea;
     }
     if (options.maxSteiner) cap = options.maxSteiner;
+    if (steinerCap) cap = std::min(cap, double(steinerCap));
     steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, 4.0e9));
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < input.points.size(); ++i)
@@ -85,6 +94,7 @@ class Refiner {
   }
 
   StepResult run();
+  bool anyBad() const;
   StepResult runSteps();
   void markFree(std::vector<uint8_t>& out) const {
     out.resize(role_.size());
@@ -97,9 +107,12 @@ class Refiner {
   Corner worstCorner(uint32_t t) const;
   double shortestEdge2(uint32_t t) const;
   bool repair(uint32_t t, Corner c);
-  bool splitSubsegment(uint32_t e);
+  // Splits at `preferred` (a fraction of the way from the edge's first end) when given and
+  // well inside, else by the shell rule.
+  bool splitSubsegment(uint32_t e, double preferred = -1);
   bool splitChord(uint32_t e);
   void buildCornerFans();
+  void cutAtFeet();
   void releaseChords();
   bool insertSteiner(uint32_t from, const double* x);
   uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
@@ -121,7 +134,6 @@ class Refiner {
   SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
   bool tryRemove(uint32_t v);
   void removeSteinerPoints();
-  bool anyBad() const;
   StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
   void slicePoint(uint32_t t, double* x) const;
@@ -146,6 +158,7 @@ class Refiner {
   const Pslg& input_;
   const Options& options_;
   const Budget& budget_;
+  const Strategy strategy_;
   std::vector<uint8_t> role_;
   // Per vertex: the input vertex whose corner fan it belongs to (on its arc, or where the fan
   // meets a segment), else kNone; per fan centre, the fan's radius.
@@ -195,7 +208,7 @@ Corner Refiner::worstCorner(uint32_t t) const {
 
 // Splits the subsegment of fixed half-edge e. Next to an input vertex the split lies at a
 // power of two from it (concentric shells); otherwise at the midpoint.
-bool Refiner::splitSubsegment(uint32_t e) {
+bool Refiner::splitSubsegment(uint32_t e, double preferred) {
   if (isChord(e)) return splitChord(e);
   uint32_t a = T_.tri[e], b = T_.tri[next(e)];
   // Copies: adding a vertex may move the coordinate array.
@@ -206,6 +219,7 @@ bool Refiner::splitSubsegment(uint32_t e) {
     double shell = std::exp2(std::round(std::log2(len / 2)));
     s = role_[a] == kInput ? shell / len : 1 - shell / len;
   }
+  if (preferred > 0.01 && preferred < 0.99) s = preferred;
   uint32_t seg = T_.segment[e];
   SegmentLine line = segmentLine(seg, pa, pb);
   double ta = line.param(pa), tb = line.param(pb);
@@ -256,6 +270,7 @@ void Refiner::buildCornerFans() {
     uint32_t to;       // the other end of the fixed edge
     double direction;  // radians
     bool sectorInside; // the sector from this spoke counter-clockwise to the next is in the domain
+    bool sectorBad;    // ... and holds a triangle that misses the target
   };
   std::vector<Spoke> spokes;
   // The fixed edges at v in counter-clockwise order (empty if v has none); link distance.
@@ -264,13 +279,16 @@ void Refiner::buildCornerFans() {
     linkDistance = INFINITY;
     const double* pv = P(v);
     uint32_t e0 = T_.vertexEdge[v], e = e0;
+    bool badBeforeFirst = false;
     do {
       uint32_t t = e / 3;
       bool inside = T_.inside[t] && !T_.isGhost(t);
       if (T_.isFixed(e)) {
         const double* pu = P(T_.tri[next(e)]);
-        spokes.push_back({T_.tri[next(e)], std::atan2(pu[1] - pv[1], pu[0] - pv[0]), inside});
+        spokes.push_back({T_.tri[next(e)], std::atan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
       }
+      bool bad = inside && worstCorner(t).k >= 0;
+      (spokes.empty() ? badBeforeFirst : spokes.back().sectorBad) |= bad;
       if (!T_.isGhost(t)) {
         const double *b = P(T_.tri[next(e)]), *c = P(T_.tri[prev(e)]);
         double dx = c[0] - b[0], dy = c[1] - b[1];
@@ -280,6 +298,7 @@ void Refiner::buildCornerFans() {
       }
       e = T_.opp[prev(e)];
     } while (e != e0);
+    if (!spokes.empty()) spokes.back().sectorBad |= badBeforeFirst;
   };
   auto sectorAngle = [&](size_t i) {
     if (spokes.size() == 1) return kTwoPi;
@@ -294,7 +313,9 @@ void Refiner::buildCornerFans() {
     double link;
     readStar(v, link);
     bool small = false;
-    for (size_t i = 0; i < spokes.size(); ++i) small |= spokes[i].sectorInside && sectorAngle(i) < kSmallAngle;
+    for (size_t i = 0; i < spokes.size(); ++i)
+      small |= spokes[i].sectorInside && sectorAngle(i) < kSmallAngle &&
+               (spokes[i].sectorBad || !strategy_.fansOnlyWhereBad);
     if (small && std::isfinite(link) && link * link > 100 * minEdge2_) centres.push_back({v, kFactor * link});
   }
   fanRadius_.assign(inputCount, 0);
@@ -624,6 +645,14 @@ bool Refiner::repair(uint32_t t, Corner c) {
     }
     // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
     uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
+    if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) {
+      // Non-obtuse: the foot of the altitude from the obtuse corner cuts the triangle into two
+      // right triangles with one point.
+      const double *pc = P(T_.tri[3 * t + c.k]), *pa = P(T_.tri[opposite]), *pb = P(T_.tri[next(opposite)]);
+      double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
+      double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
+      return splitSubsegment(opposite, s);
+    }
     if (T_.isFixed(opposite)) return splitSubsegment(opposite);
     double x[2];
     slicePoint(t, x);
@@ -641,7 +670,29 @@ double Refiner::shortestEdge2(uint32_t t) const {
   return std::min({dist2(P(v[0]), P(v[1])), dist2(P(v[1]), P(v[2])), dist2(P(v[2]), P(v[0]))});
 }
 
+// Non-obtuse: a triangle obtuse opposite a subsegment is cut at the foot of its altitude into
+// two right triangles. Done before the corner fans, it settles most slivers between segments
+// with one point each, and the fans go only where that is not enough.
+void Refiner::cutAtFeet() {
+  for (int pass = 0; pass < 4; ++pass) {
+    bool changed = false;
+    for (uint32_t t = 0; t < T_.triangleSlots(); ++t) {
+      if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t)) continue;
+      Corner c = worstCorner(t);
+      uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
+      if (c.k < 0 || !c.large || !T_.isFixed(opposite)) continue;
+      const double *pc = P(T_.tri[3 * t + c.k]), *pa = P(T_.tri[opposite]), *pb = P(T_.tri[next(opposite)]);
+      double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
+      double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
+      changed |= splitSubsegment(opposite, s);
+      if (T_.vertexCount() >= steinerLimit_) return;
+    }
+    if (!changed) break;
+  }
+}
+
 StepResult Refiner::run() {
+  if (nonObtuse_ && strategy_.cutAtFeetFirst) cutAtFeet();
   if (acute_ || nonObtuse_) buildCornerFans();
   StepResult result = runSteps();
   releaseChords();
@@ -787,12 +838,47 @@ void Refiner::removeSteinerPoints() {
 
 }  // namespace
 
+// Acute and non-obtuse runs try a few boundary strategies on copies of the triangulation and
+// keep the result that meets the target with the fewest Steiner points: the corner fans
+// everywhere are the safe way (they settle every small angle), fans only where needed and
+// altitude feet (non-obtuse) often need far fewer points but now and then do not finish.
+// A later strategy stops as soon as it has used as many points as the best so far, so the
+// extra runs cost little where the first is already good.
 StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
                   const Budget& budget, std::vector<uint8_t>& freeVertex) {
-  Refiner refiner(T, input, options, budget);
-  StepResult result = refiner.run();
-  refiner.markFree(freeVertex);
-  return result;
+  std::vector<Strategy> strategies = {Strategy{}};
+  if (options.mode == Mode::NonObtuse) {
+    strategies.push_back({true, true, true});
+    strategies.push_back({false, true, false});
+  } else if (options.mode == Mode::Acute) {
+    strategies.push_back({false, false, true});
+  }
+  if (strategies.size() == 1) {
+    Refiner refiner(T, input, options, budget, strategies[0], 0);
+    StepResult result = refiner.run();
+    refiner.markFree(freeVertex);
+    return result;
+  }
+  const Triangulation start = T;
+  StepResult bestResult;
+  bool haveBest = false, bestMet = false;
+  for (const Strategy& strategy : strategies) {
+    Triangulation work = start;
+    uint32_t cap = bestMet ? T.vertexCount() - start.vertexCount() : 0;
+    if (bestMet && cap <= 1) break;
+    Refiner refiner(work, input, options, budget, strategy, bestMet ? cap - 1 : 0);
+    StepResult result = refiner.run();
+    bool met = result.ok() && !refiner.anyBad();
+    if (!haveBest || (met && (!bestMet || work.vertexCount() < T.vertexCount()))) {
+      T = std::move(work);
+      refiner.markFree(freeVertex);
+      bestResult = result;
+      haveBest = true;
+      bestMet = met;
+    }
+    if (result.status == Status::Cancelled || budget.stop()) break;
+  }
+  return bestResult;
 }
 
 }  // namespace acutemesh::detail
