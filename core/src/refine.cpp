@@ -628,6 +628,13 @@ bool Refiner::relocate(uint32_t a) {
 }
 
 bool Refiner::repair(uint32_t t, Corner c) {
+  // Moving vertices (relocation, the removal pass) can leave edges that are not locally
+  // Delaunay; a triangle standing on one is flipped away first, since the search for a new
+  // point below assumes empty circumcircles.
+  flips_.assign({3 * t, 3 * t + 1, 3 * t + 2});
+  size_t before = touched_.size();
+  T_.legalize(flips_);
+  if (touched_.size() > before) return true;
   if (c.large) {
     // First try to repair the triangle by moving one of its Steiner points (seed 2.2).
     for (int k = 0; k < 3; ++k) {
