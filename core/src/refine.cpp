@@ -133,6 +133,14 @@ class Refiner {
   };
   SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
   bool tryRemove(uint32_t v);
+  bool tryRemoveFromSegment(uint32_t v);
+  bool holeMeetsTarget();
+  void undoMoves();
+  struct Moved {
+    uint32_t vertex;
+    double x, y;
+  };
+  std::vector<Moved> moved_;
   void removeSteinerPoints();
   StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
@@ -783,10 +791,36 @@ StepResult Refiner::repairAll() {
   return {};
 }
 
-// Removes free vertex v if the triangles that then fill its star meet the target, or can be
-// made to by moving free vertices of theirs (relocation, as in repair). Otherwise everything
-// moved goes back and v is put back (the constrained Delaunay triangulation is unique, so its
-// star returns as it was).
+// After a removal: every triangle of the hole (hole_) meets the target, or is made to by
+// moving one of its vertices (relocation, or sliding along a segment). Moves are logged in
+// moved_ so that a failed removal can undo them.
+bool Refiner::holeMeetsTarget() {
+  moved_.clear();
+  for (uint32_t t : hole_) {
+    if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t) || worstCorner(t).k < 0) continue;
+    bool repaired = false;
+    for (uint32_t k = 0; k < 3 && !repaired; ++k) {
+      uint32_t a = T_.tri[3 * t + k];
+      Moved old{a, P(a)[0], P(a)[1]};
+      if (relocate(a) || slide(a)) moved_.push_back(old), repaired = true;
+    }
+    if (!repaired) return false;
+  }
+  return true;
+}
+
+void Refiner::undoMoves() {
+  for (size_t i = moved_.size(); i-- > 0;) {
+    T_.pts[2 * size_t(moved_[i].vertex)] = moved_[i].x;
+    T_.pts[2 * size_t(moved_[i].vertex) + 1] = moved_[i].y;
+  }
+  moved_.clear();
+}
+
+// Removes free vertex v if the triangles that then fill its star meet the target (see
+// holeMeetsTarget). Otherwise everything moved goes back and v is put back (the constrained
+// Delaunay triangulation is unique, so its star returns as it was up to cocircular ties,
+// which the final repair pass settles).
 bool Refiner::tryRemove(uint32_t v) {
   touched_.clear();
   T_.touched = &touched_;
@@ -794,31 +828,36 @@ bool Refiner::tryRemove(uint32_t v) {
   T_.touched = nullptr;
   if (!removed) return false;
   hole_ = touched_;
-  struct Moved {
-    uint32_t vertex;
-    double x, y;
-  };
-  std::vector<Moved> moved;
-  bool good = true;
-  for (uint32_t t : hole_) {
-    if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t) || worstCorner(t).k < 0) continue;
-    bool repaired = false;
-    for (uint32_t k = 0; k < 3 && !repaired; ++k) {
-      uint32_t a = T_.tri[3 * t + k];
-      Moved old{a, P(a)[0], P(a)[1]};
-      if (relocate(a) || slide(a)) moved.push_back(old), repaired = true;
-    }
-    if (!repaired) {
-      good = false;
-      break;
-    }
-  }
-  if (good) return true;
-  for (size_t i = moved.size(); i-- > 0;) {
-    T_.pts[2 * size_t(moved[i].vertex)] = moved[i].x;
-    T_.pts[2 * size_t(moved[i].vertex) + 1] = moved[i].y;
-  }
+  if (holeMeetsTarget()) return true;
+  undoMoves();
   T_.insert(v, hole_.back());  // the last triangle written is alive and next to v's place
+  return false;
+}
+
+// The same for a Steiner vertex on a segment: its two pieces become one again. If that fails,
+// v goes back onto the merged piece; should even that be impossible (the piece's triangles no
+// longer hold v's place), v stays out and the final repair pass mends what that spoilt.
+bool Refiner::tryRemoveFromSegment(uint32_t v) {
+  if (fanCenter_[v] != kNone || T_.vertexEdge[v] == kNone) return false;
+  uint32_t ends[2], count = 0, e0 = T_.vertexEdge[v], e = e0;
+  do {
+    if (T_.isFixed(e)) {
+      if (count == 2) return false;
+      ends[count++] = T_.tri[next(e)];
+    }
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  if (count != 2) return false;
+  touched_.clear();
+  T_.touched = &touched_;
+  bool removed = T_.removeFromSegment(v);
+  T_.touched = nullptr;
+  if (!removed) return false;
+  hole_ = touched_;
+  if (holeMeetsTarget()) return true;
+  undoMoves();
+  uint32_t merged = T_.findEdge(ends[0], ends[1]);
+  if (merged != kNone) T_.splitFixedEdge(merged, v);
   return false;
 }
 
@@ -835,9 +874,10 @@ void Refiner::removeSteinerPoints() {
   for (int pass = 0; pass < 4; ++pass) {
     uint32_t removed = 0;
     for (uint32_t v = T_.vertexCount(); v-- > 0;) {
-      if (role_[v] != kFree || T_.vertexEdge[v] == kNone) continue;
+      if (T_.vertexEdge[v] == kNone) continue;
       if ((v & 63) == 0 && budget_.stop()) return;
-      removed += tryRemove(v);
+      if (role_[v] == kFree) removed += tryRemove(v);
+      else if (role_[v] == kOnSegment) removed += tryRemoveFromSegment(v);
     }
     if (removed == 0) break;
   }
