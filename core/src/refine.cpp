@@ -51,7 +51,7 @@ void circumcenter(const double* a, const double* b, const double* c, double* out
 struct Strategy {
   bool cutAtFeetFirst = false;  // non-obtuse: cut slivers at altitude feet before the fans
   bool footOnSegments = false;  // non-obtuse: split an encroached subsegment at the altitude foot
-  bool fansOnlyWhereBad = false;  // fans only at small sectors that still hold a bad triangle
+  bool lazyFans = false;  // fans only at small sectors where a bad triangle turns up
 };
 
 class Refiner {
@@ -63,6 +63,7 @@ class Refiner {
     role_.assign(T.vertexCount(), kOnSegment);  // crossing points made by the CDT lie on segments
     std::fill(role_.begin(), role_.begin() + inputCount, kInput);
     fanCenter_.assign(T.vertexCount(), kNone);
+    fanRadius_.assign(inputCount, 0);
     acute_ = options.mode == Mode::Acute;
     nonObtuse_ = options.mode == Mode::NonObtuse;
     cosMax_ = std::cos(options.maxAngle * kDegree);
@@ -112,6 +113,17 @@ class Refiner {
   bool splitSubsegment(uint32_t e, double preferred = -1);
   bool splitChord(uint32_t e);
   void buildCornerFans();
+  double readStar(uint32_t v);
+  double sectorAngle(size_t i) const;
+  double fanRadius(uint32_t v, bool onlyWhereBad);
+  void buildFan(uint32_t v, double r);
+  struct Spoke {
+    uint32_t to;        // the other end of the fixed edge
+    double direction;   // radians
+    bool sectorInside;  // the sector from this spoke counter-clockwise to the next is in the domain
+    bool sectorBad;     // ... and holds a triangle that misses the target
+  };
+  std::vector<Spoke> spokes_;
   void cutAtFeet();
   void releaseChords();
   bool insertSteiner(uint32_t from, const double* x);
@@ -256,123 +268,151 @@ bool Refiner::splitChord(uint32_t e) {
   if (!std::isfinite(m[0]) || !std::isfinite(m[1])) return false;
   uint32_t v = addVertex(m, kArc, c);
   if (T_.splitFixedEdge(e, v)) return true;
-  dropLastVertex();
-  return false;
+  // The arc point lies beyond the triangle on the chord's outer side (a thin one). Insert it
+  // where it lies if no segment is in between, free the chord to flip towards it, and fix
+  // the chords that are there afterwards.
+  uint32_t outer = T_.tri[prev(e)] == c ? T_.opp[e] / 3 : e / 3, reached = kNone;
+  Location loc;
+  if (firstFixedCrossed(outer, m, reached) == kNone && reached != kNone && T_.inside[reached] &&
+      !T_.isGhost(reached))
+    loc = T_.locate(m, reached);
+  bool placed = (loc.where == Where::InTriangle ||
+                 (loc.where == Where::OnEdge && !T_.isFixed(loc.edge))) &&
+                T_.insertAt(v, loc) == v;
+  if (!placed) {
+    dropLastVertex();
+    return false;
+  }
+  if (uint32_t ab = T_.findEdge(a, b); ab != kNone) {
+    T_.unfixEdge(ab);
+    flips_.assign({ab, T_.opp[ab]});
+    T_.legalize(flips_);
+  }
+  for (auto [x, y] : {std::pair{a, v}, std::pair{v, b}, std::pair{a, b}}) {
+    uint32_t f = T_.findEdge(x, y);
+    if (f != kNone && !T_.isFixed(f)) T_.fixEdge(f, 0);
+  }
+  return true;
 }
 
 // Corner fans. Where segments meet at a small angle, refinement alone spirals into the
 // corner: points placed in or next to the wedge encroach the short subsegments at its apex,
-// and their splits make the triangles there smaller still. So before refinement, each input
-// vertex with a domain sector under kSmallAngle between its segments gets a fan: every
-// segment at it is split at the same distance r, and every domain sector around it is cut by
-// points on the circle of radius r into isosceles triangles with apex angles of at most
-// kFanAngle (acute). The fan's outer edges (chords) are fixed while refinement runs, so the
-// fan stays as built; the rest of the domain meets no angle under 90 degrees there, and a
-// chord that must be split is split on its arc (one more spoke). r is 0.4 of the distance from
-// the vertex to its link: the fan's disk holds no other vertex or segment, its triangles are
-// Delaunay, and the fans of two vertices keep apart.
+// and their splits make the triangles there smaller still. So an input vertex with a domain
+// sector under kSmallAngle between its segments gets a fan: every segment at it is split at
+// the same distance r, and every domain sector around it is cut by points on the circle of
+// radius r into isosceles triangles with apex angles of at most kFanAngle (acute). The fan's
+// outer edges (chords) are fixed while refinement runs, so the fan stays as built; the rest of
+// the domain meets no angle under 90 degrees there, and a chord that must be split is split on
+// its arc (one more spoke). r is 0.4 of the distance from the vertex to its link: the fan's
+// disk holds no other vertex or segment, its triangles are Delaunay, and the fans of two
+// vertices keep apart.
+namespace {
+constexpr double kSmallAngle = 60 * kDegree, kFanAngle = 80 * kDegree, kTwoPi = 2 * M_PI;
+constexpr double kFanFactor = 0.4;
+}  // namespace
+
+// The fixed edges at v in counter-clockwise order into spokes_ (empty if v has none), and
+// the distance from v to its link.
+double Refiner::readStar(uint32_t v) {
+  spokes_.clear();
+  double linkDistance = INFINITY;
+  const double* pv = P(v);
+  uint32_t e0 = T_.vertexEdge[v], e = e0;
+  bool badBeforeFirst = false;
+  do {
+    uint32_t t = e / 3;
+    bool inside = T_.inside[t] && !T_.isGhost(t);
+    if (T_.isFixed(e)) {
+      const double* pu = P(T_.tri[next(e)]);
+      spokes_.push_back({T_.tri[next(e)], std::atan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
+    }
+    bool bad = inside && worstCorner(t).k >= 0;
+    (spokes_.empty() ? badBeforeFirst : spokes_.back().sectorBad) |= bad;
+    if (!T_.isGhost(t)) {
+      const double *b = P(T_.tri[next(e)]), *c = P(T_.tri[prev(e)]);
+      double dx = c[0] - b[0], dy = c[1] - b[1];
+      double s = std::clamp(((pv[0] - b[0]) * dx + (pv[1] - b[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      double q[2] = {b[0] + s * dx, b[1] + s * dy};
+      linkDistance = std::min(linkDistance, std::sqrt(dist2(pv, q)));
+    }
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  if (!spokes_.empty()) spokes_.back().sectorBad |= badBeforeFirst;
+  return linkDistance;
+}
+
+double Refiner::sectorAngle(size_t i) const {
+  if (spokes_.size() == 1) return kTwoPi;
+  double a = spokes_[(i + 1) % spokes_.size()].direction - spokes_[i].direction;
+  return a <= 0 ? a + kTwoPi : a;
+}
+
+// The fan radius input vertex v calls for (0: no fan): it has a small domain sector, and with
+// onlyWhereBad one that holds a triangle missing the target.
+double Refiner::fanRadius(uint32_t v, bool onlyWhereBad) {
+  if (role_[v] != kInput || T_.vertexEdge[v] == kNone || fanRadius_[v] > 0) return 0;
+  double link = readStar(v);
+  bool small = false;
+  for (size_t i = 0; i < spokes_.size(); ++i)
+    small |= spokes_[i].sectorInside && sectorAngle(i) < kSmallAngle && (spokes_[i].sectorBad || !onlyWhereBad);
+  return small && std::isfinite(link) && link * link > 100 * minEdge2_ ? kFanFactor * link : 0;
+}
+
+void Refiner::buildFan(uint32_t v, double r) {
+  readStar(v);
+  fanRadius_[v] = r;
+  const double pv[2] = {P(v)[0], P(v)[1]};
+  const size_t n = spokes_.size();
+  // Split each fixed edge at v that bounds a domain sector at distance r.
+  std::vector<uint32_t> shell(n, kNone);
+  for (size_t i = 0; i < n; ++i) {
+    bool bounds = spokes_[i].sectorInside || spokes_[(i + n - 1) % n].sectorInside;
+    uint32_t e = T_.findEdge(v, spokes_[i].to);
+    if (!bounds || e == kNone) continue;
+    const double pu[2] = {P(spokes_[i].to)[0], P(spokes_[i].to)[1]};
+    SegmentLine line = segmentLine(T_.segment.empty() ? kNone : T_.segment[e], pv, pu);
+    double tv = line.param(pv), tu = line.param(pu);
+    double m[2];
+    line.at(tv + (tu - tv) * r / std::sqrt(dist2(pv, pu)), m);
+    uint32_t s = addVertex(m, T_.segment.empty() || T_.segment[e] == kNone ? kOnHull : kOnSegment, v);
+    if (T_.splitFixedEdge(e, s)) shell[i] = s;
+    else dropLastVertex();
+  }
+  // Points on the arc of each domain sector, then the chords between consecutive points.
+  std::vector<uint32_t>& ring = ring_;
+  for (size_t i = 0; i < n; ++i) {
+    size_t j = (i + 1) % n;
+    if (!spokes_[i].sectorInside || shell[i] == kNone || shell[j] == kNone) continue;
+    double angle = sectorAngle(i);
+    int pieces = int(std::ceil(angle / kFanAngle));
+    ring.assign(1, shell[i]);
+    for (int k = 1; k < pieces; ++k) {
+      double a = spokes_[i].direction + angle * k / pieces;
+      double x[2] = {pv[0] + r * std::cos(a), pv[1] + r * std::sin(a)};
+      uint32_t w = addVertex(x, kArc, v);
+      Location loc = T_.locate(x, T_.vertexEdge[v] / 3);
+      if (loc.where == Where::InTriangle && T_.inside[loc.tri] && T_.insertAt(w, loc) == w) {
+        ring.push_back(w);
+      } else {
+        dropLastVertex();
+      }
+    }
+    ring.push_back(shell[j]);
+    for (size_t k = 0; k + 1 < ring.size(); ++k) {
+      uint32_t e = T_.findEdge(ring[k], ring[k + 1]);
+      if (e != kNone && !T_.isFixed(e)) T_.fixEdge(e, 0);
+    }
+  }
+}
+
+// Fans before refinement: every radius first (from the triangulation as it is), then the fans.
+// With strategy_.lazyFans only where a small sector already holds a bad triangle; repair()
+// adds the others when a bad triangle turns up at such a corner.
 void Refiner::buildCornerFans() {
-  constexpr double kSmallAngle = 60 * kDegree, kFanAngle = 80 * kDegree, kTwoPi = 2 * M_PI;
-  constexpr double kFactor = 0.4;
-  struct Spoke {
-    uint32_t to;       // the other end of the fixed edge
-    double direction;  // radians
-    bool sectorInside; // the sector from this spoke counter-clockwise to the next is in the domain
-    bool sectorBad;    // ... and holds a triangle that misses the target
-  };
-  std::vector<Spoke> spokes;
-  // The fixed edges at v in counter-clockwise order (empty if v has none); link distance.
-  auto readStar = [&](uint32_t v, double& linkDistance) {
-    spokes.clear();
-    linkDistance = INFINITY;
-    const double* pv = P(v);
-    uint32_t e0 = T_.vertexEdge[v], e = e0;
-    bool badBeforeFirst = false;
-    do {
-      uint32_t t = e / 3;
-      bool inside = T_.inside[t] && !T_.isGhost(t);
-      if (T_.isFixed(e)) {
-        const double* pu = P(T_.tri[next(e)]);
-        spokes.push_back({T_.tri[next(e)], std::atan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
-      }
-      bool bad = inside && worstCorner(t).k >= 0;
-      (spokes.empty() ? badBeforeFirst : spokes.back().sectorBad) |= bad;
-      if (!T_.isGhost(t)) {
-        const double *b = P(T_.tri[next(e)]), *c = P(T_.tri[prev(e)]);
-        double dx = c[0] - b[0], dy = c[1] - b[1];
-        double s = std::clamp(((pv[0] - b[0]) * dx + (pv[1] - b[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
-        double q[2] = {b[0] + s * dx, b[1] + s * dy};
-        linkDistance = std::min(linkDistance, std::sqrt(dist2(pv, q)));
-      }
-      e = T_.opp[prev(e)];
-    } while (e != e0);
-    if (!spokes.empty()) spokes.back().sectorBad |= badBeforeFirst;
-  };
-  auto sectorAngle = [&](size_t i) {
-    if (spokes.size() == 1) return kTwoPi;
-    double a = spokes[(i + 1) % spokes.size()].direction - spokes[i].direction;
-    return a <= 0 ? a + kTwoPi : a;
-  };
-  // First every radius (from the triangulation as it is), then the fans.
   std::vector<std::pair<uint32_t, double>> centres;
-  uint32_t inputCount = std::min(uint32_t(input_.vertexCount()), T_.vertexCount());
-  for (uint32_t v = 0; v < inputCount; ++v) {
-    if (role_[v] != kInput || T_.vertexEdge[v] == kNone) continue;
-    double link;
-    readStar(v, link);
-    bool small = false;
-    for (size_t i = 0; i < spokes.size(); ++i)
-      small |= spokes[i].sectorInside && sectorAngle(i) < kSmallAngle &&
-               (spokes[i].sectorBad || !strategy_.fansOnlyWhereBad);
-    if (small && std::isfinite(link) && link * link > 100 * minEdge2_) centres.push_back({v, kFactor * link});
-  }
-  fanRadius_.assign(inputCount, 0);
-  std::vector<uint32_t> ring;
-  for (auto [v, r] : centres) {
-    double link;
-    readStar(v, link);
-    fanRadius_[v] = r;
-    const double pv[2] = {P(v)[0], P(v)[1]};
-    // Split each fixed edge at v that bounds a domain sector at distance r.
-    std::vector<uint32_t> shell(spokes.size(), kNone);
-    for (size_t i = 0; i < spokes.size(); ++i) {
-      bool bounds = spokes[i].sectorInside || spokes[(i + spokes.size() - 1) % spokes.size()].sectorInside;
-      uint32_t e = T_.findEdge(v, spokes[i].to);
-      if (!bounds || e == kNone) continue;
-      const double pu[2] = {P(spokes[i].to)[0], P(spokes[i].to)[1]};
-      SegmentLine line = segmentLine(T_.segment.empty() ? kNone : T_.segment[e], pv, pu);
-      double tv = line.param(pv), tu = line.param(pu);
-      double m[2];
-      line.at(tv + (tu - tv) * r / std::sqrt(dist2(pv, pu)), m);
-      uint32_t s = addVertex(m, T_.segment.empty() || T_.segment[e] == kNone ? kOnHull : kOnSegment, v);
-      if (T_.splitFixedEdge(e, s)) shell[i] = s;
-      else dropLastVertex();
-    }
-    // Points on the arc of each domain sector, then the chords between consecutive points.
-    for (size_t i = 0; i < spokes.size(); ++i) {
-      size_t j = (i + 1) % spokes.size();
-      if (!spokes[i].sectorInside || shell[i] == kNone || shell[j] == kNone) continue;
-      double angle = sectorAngle(i);
-      int pieces = int(std::ceil(angle / kFanAngle));
-      ring.assign(1, shell[i]);
-      for (int k = 1; k < pieces; ++k) {
-        double a = spokes[i].direction + angle * k / pieces;
-        double x[2] = {pv[0] + r * std::cos(a), pv[1] + r * std::sin(a)};
-        uint32_t w = addVertex(x, kArc, v);
-        Location loc = T_.locate(x, T_.vertexEdge[v] / 3);
-        if (loc.where == Where::InTriangle && T_.inside[loc.tri] && T_.insertAt(w, loc) == w) {
-          ring.push_back(w);
-        } else {
-          dropLastVertex();
-        }
-      }
-      ring.push_back(shell[j]);
-      for (size_t k = 0; k + 1 < ring.size(); ++k) {
-        uint32_t e = T_.findEdge(ring[k], ring[k + 1]);
-        if (e != kNone && !T_.isFixed(e)) T_.fixEdge(e, 0);
-      }
-    }
-  }
+  for (uint32_t v = 0; v < fanRadius_.size(); ++v)
+    if (double r = fanRadius(v, strategy_.lazyFans)) centres.push_back({v, r});
+  for (auto [v, r] : centres) buildFan(v, r);
 }
 
 // Chords are fixed only while refinement runs; the output knows them as plain edges.
@@ -643,6 +683,16 @@ bool Refiner::repair(uint32_t t, Corner c) {
   size_t before = touched_.size();
   T_.legalize(flips_);
   if (touched_.size() > before) return true;
+  if (strategy_.lazyFans && (acute_ || nonObtuse_)) {
+    for (int k = 0; k < 3; ++k) {
+      uint32_t v = T_.tri[3 * t + k];
+      if (v >= fanRadius_.size()) continue;
+      if (double r = fanRadius(v, true)) {
+        buildFan(v, r);
+        return true;
+      }
+    }
+  }
   if (c.large) {
     // First try to repair the triangle by moving one of its Steiner points (seed 2.2).
     for (int k = 0; k < 3; ++k) {
