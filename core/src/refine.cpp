@@ -146,6 +146,7 @@ class Refiner {
   SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
   bool tryRemove(uint32_t v);
   bool tryRemoveFromSegment(uint32_t v);
+  bool tryMerge(uint32_t u, uint32_t w);
   bool holeMeetsTarget();
   void undoMoves();
   struct Moved {
@@ -911,6 +912,40 @@ bool Refiner::tryRemoveFromSegment(uint32_t v) {
   return false;
 }
 
+// Replaces two neighbouring free vertices u, w by one at their midpoint if the triangles
+// around it meet the target (after moving vertices as holeMeetsTarget does). Otherwise the
+// pair goes back.
+bool Refiner::tryMerge(uint32_t u, uint32_t w) {
+  const double pu[2] = {P(u)[0], P(u)[1]}, pw[2] = {P(w)[0], P(w)[1]};
+  touched_.clear();
+  T_.touched = &touched_;
+  bool merged = false;
+  if (T_.removeVertex(u)) {
+    if (T_.removeVertex(w)) {
+      double mid[2] = {0.5 * (pu[0] + pw[0]), 0.5 * (pu[1] + pw[1])};
+      uint32_t m = addVertex(mid, kFree);
+      Location loc = T_.locate(mid, touched_.back());
+      if (loc.where == Where::InTriangle && T_.inside[loc.tri] && T_.insertAt(m, loc) == m) {
+        hole_ = touched_;
+        T_.touched = nullptr;
+        if (holeMeetsTarget()) return true;
+        undoMoves();
+        T_.touched = &touched_;
+        merged = T_.removeVertex(m);
+      }
+      if (!merged && T_.vertexEdge[m] != kNone) {
+        T_.touched = nullptr;
+        return false;  // m could not be taken out again: keep it (the final repair checks)
+      }
+      dropLastVertex();
+      T_.insert(w, touched_.back());
+    }
+    T_.insert(u, touched_.back());
+  }
+  T_.touched = nullptr;
+  return false;
+}
+
 // The improvement pass (once the target is met): every free Steiner point whose removal
 // keeps every triangle on target goes, newest first, until a pass removes none.
 bool Refiner::anyBad() const {
@@ -921,7 +956,7 @@ bool Refiner::anyBad() const {
 
 void Refiner::removeSteinerPoints() {
   if (anyBad()) return;
-  for (int pass = 0; pass < 4; ++pass) {
+  for (int pass = 0; pass < 12; ++pass) {
     uint32_t removed = 0;
     for (uint32_t v = T_.vertexCount(); v-- > 0;) {
       if (T_.vertexEdge[v] == kNone) continue;
@@ -930,6 +965,32 @@ void Refiner::removeSteinerPoints() {
       else if (role_[v] == kOnSegment) removed += tryRemoveFromSegment(v);
     }
     if (removed == 0) break;
+  }
+  // Then pairs of neighbouring free vertices that one point can stand in for.
+  for (int pass = 0; pass < 4; ++pass) {
+    uint32_t merged = 0;
+    for (uint32_t u = T_.vertexCount(); u-- > 0;) {
+      if (role_[u] != kFree || T_.vertexEdge[u] == kNone) continue;
+      if ((u & 63) == 0 && budget_.stop()) return;
+      // The free neighbours first: a failed merge re-inserts u, which renumbers its edges.
+      std::vector<uint32_t>& partners = ring_;
+      partners.clear();
+      uint32_t e0 = T_.vertexEdge[u], e = e0;
+      do {
+        uint32_t w = T_.tri[next(e)];
+        if (w != kGhost && role_[w] == kFree) partners.push_back(w);
+        e = T_.opp[prev(e)];
+      } while (e != e0);
+      std::vector<uint32_t> list = partners;  // ring_ is reused by the repairs
+      for (uint32_t w : list) {
+        if (T_.vertexEdge[u] == kNone || T_.vertexEdge[w] == kNone || T_.findEdge(u, w) == kNone) continue;
+        if (tryMerge(u, w)) {
+          ++merged;
+          break;
+        }
+      }
+    }
+    if (merged == 0) break;
   }
 }
 
