@@ -194,6 +194,7 @@ class Refiner {
   // certificate, instead of spiralling into rounding noise.
   double minEdge2_ = 0;
   std::vector<uint32_t> touched_, cavity_, ring_, hole_, flips_;
+  std::vector<std::array<double, 2>> clipPoly_, clipNext_;  // relocate()'s scratch
 };
 
 // The corner that most misses the target, decided exactly where the target is 90 degrees.
@@ -642,7 +643,9 @@ bool Refiner::relocate(uint32_t a) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (uint32_t v : ring)
     for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], P(v)[k]), hi[k] = std::max(hi[k], P(v)[k]);
-  std::vector<std::array<double, 2>> poly = {{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}}, next;
+  std::vector<std::array<double, 2>>& poly = clipPoly_;
+  std::vector<std::array<double, 2>>& next = clipNext_;
+  poly.assign({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
   auto clip = [&](double nx, double ny, double c) {  // keep n.p > c
     next.clear();
     for (size_t i = 0; i < poly.size(); ++i) {
@@ -967,7 +970,7 @@ void Refiner::removeSteinerPoints() {
     if (removed == 0) break;
   }
   // Then pairs of neighbouring free vertices that one point can stand in for.
-  for (int pass = 0; pass < 4; ++pass) {
+  for (int pass = 0; pass < 2; ++pass) {
     uint32_t merged = 0;
     for (uint32_t u = T_.vertexCount(); u-- > 0;) {
       if (role_[u] != kFree || T_.vertexEdge[u] == kNone) continue;
