@@ -205,23 +205,54 @@ void certify(const Options& options, Stats& stats, Result& result) {
 const char* version() { return "0.1.0"; }
 
 namespace detail {
-int rangeExponent(const Pslg& in) {
-  double largest = 0;
-  for (double x : in.points) largest = std::max(largest, std::fabs(x));
-  for (double x : in.holes) largest = std::max(largest, std::fabs(x));
-  if (!(largest > 0) || !std::isfinite(largest)) return 0;
-  int exponent;
-  std::frexp(largest, &exponent);
-  return exponent > 64 || exponent < -64 ? exponent : 0;
+void CoordinateRange::add(const std::vector<double>& xy) {
+  for (double x : xy) {
+    if (x == 0) continue;
+    if (!std::isfinite(x)) {
+      finite = false;
+      continue;
+    }
+    int e;
+    std::frexp(x, &e);
+    if (empty) largest = smallest = e, empty = false;
+    largest = std::max(largest, e);
+    smallest = std::min(smallest, e);
+  }
+}
+
+namespace {
+// Binary exponents the predicates handle exactly once scaled (see build.h): the largest
+// magnitude is left alone within 2^+-kNear, the smallest non-zero one must stay above
+// 2^kLowest, and a wide spread may push the largest up to 2^kNear.
+constexpr int kNear = 64, kLowest = -166;
+}  // namespace
+
+bool exactScale(const CoordinateRange& r, int& exponent) {
+  exponent = 0;
+  if (r.empty || !r.finite) return true;  // non-finite input is refused elsewhere
+  if (r.largest > kNear || r.largest < -kNear) exponent = r.largest;
+  if (r.smallest - exponent >= kLowest) return true;
+  // Tiny features next to large ones (1e-60 beside 1): lift the smallest as far as the
+  // largest allows.
+  exponent = r.largest - kNear;
+  return r.smallest - exponent >= kLowest;
+}
+
+std::string rangeMessage(const CoordinateRange& r) {
+  return "coordinates span too many orders of magnitude to be meshed exactly (the largest "
+         "about 2^" + std::to_string(r.largest) + ", the smallest non-zero about 2^" +
+         std::to_string(r.smallest) + "; at most 2^" + std::to_string(kNear - kLowest) +
+         " apart)";
 }
 
 bool scaleExactly(std::vector<double>& xy, int exponent) {
+  bool exact = true;
   for (double& x : xy) {
     double y = std::ldexp(x, exponent);
-    if (x != 0 && std::fabs(y) < std::numeric_limits<double>::min()) return false;
+    if (std::ldexp(y, -exponent) != x) exact = false;
     x = y;
   }
-  return true;
+  return exact;
 }
 }  // namespace detail
 
@@ -324,27 +355,47 @@ Result meshInRange(const Pslg& input, const Options& options) {
 }  // namespace
 
 // The predicates are exact while products of coordinate differences neither overflow nor
-// underflow. Inputs far from 1 in magnitude (1e300, 1e-300) are scaled by a power of two,
-// meshed, and scaled back: exact, since only exponents change.
+// underflow. Inputs far from 1 in magnitude (1e300, 1e-300), or with tiny features beside
+// large ones, are scaled by a power of two, meshed, and scaled back: exact, since only
+// exponents change. Inputs no power of two brings into range are refused.
 Result mesh(const Pslg& input, const Options& options) {
-  int exponent = input.points.size() % 2 ? 0 : detail::rangeExponent(input);
-  if (exponent == 0) return meshInRange(input, options);
-  Pslg scaled = input;
-  if (!detail::scaleExactly(scaled.points, -exponent) ||
-      !detail::scaleExactly(scaled.holes, -exponent)) {
+  detail::CoordinateRange range;
+  range.add(input.points);
+  range.add(input.holes);
+  int exponent = 0;
+  if (input.points.size() % 2 == 0 && !detail::exactScale(range, exponent)) {
     Result r;
     r.status = Status::BadInput;
-    r.message = "coordinates span too many orders of magnitude (up to 2^" +
-                std::to_string(exponent) + " and down to below 2^" +
-                std::to_string(exponent - 1022) + ") to be meshed exactly";
+    r.message = detail::rangeMessage(range);
+    r.stats.inputVertices = uint32_t(input.vertexCount());
+    r.stats.inputSegments = uint32_t(input.segmentCount());
+    r.stats.inputHoles = uint32_t(input.holes.size() / 2);
     return r;
   }
+  if (exponent == 0) return meshInRange(input, options);
+  Pslg scaled = input;
+  detail::scaleExactly(scaled.points, -exponent);
+  detail::scaleExactly(scaled.holes, -exponent);
   Options scaledOptions = options;
-  scaledOptions.maxArea = std::ldexp(options.maxArea, -2 * exponent);
+  if (options.maxArea > 0 && std::isfinite(options.maxArea)) {
+    // An area bound beyond the double range once scaled bounds nothing; one below it is as
+    // small as can be asked for.
+    double area = std::ldexp(options.maxArea, -2 * exponent);
+    scaledOptions.maxArea = std::isinf(area) ? 0 : std::max(area, std::numeric_limits<double>::denorm_min());
+  }
   Result r = meshInRange(scaled, scaledOptions);
-  detail::scaleExactly(r.mesh.points, exponent);
+  // Steiner points below 2^-1022 once scaled back would lose bits (subnormal doubles), and
+  // the mesh could fold: refused rather than returned inexact.
+  if (!detail::scaleExactly(r.mesh.points, exponent)) {
+    Result bad;
+    bad.status = Status::BadInput;
+    bad.message = "the mesh needs points too close to zero to be represented exactly at this "
+                  "scale (below 2^-1022); scale the input up";
+    bad.stats = std::move(r.stats);
+    bad.stats.vertices = bad.stats.triangles = bad.stats.segments = bad.stats.steiner = 0;
+    return bad;
+  }
   return r;
 }
-
 
 }  // namespace acutemesh

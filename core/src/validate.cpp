@@ -1029,9 +1029,19 @@ class Validator {
 
 Validation validate(const Pslg& input, const Mesh& mesh, const Options& options) {
   Validation result;
-  // Far from 1 (1e300, 1e-300) the predicates would overflow or underflow: check an exactly
-  // scaled copy, as mesh() meshes one.
-  int exponent = input.points.size() % 2 ? 0 : detail::rangeExponent(input);
+  // Far from 1 (1e300, 1e-300), or with tiny coordinates beside large ones, the predicates
+  // would overflow or underflow: check an exactly scaled copy, as mesh() meshes one (scaled
+  // for the input, as there; the mesh's own points go along). Input mesh() refuses cannot be
+  // checked either.
+  detail::CoordinateRange range;
+  range.add(input.points);
+  range.add(input.holes);
+  int exponent = 0;
+  if (!detail::exactScale(range, exponent)) {
+    result.ok = false;
+    result.errors.push_back("cannot check exactly: input " + detail::rangeMessage(range));
+    return result;
+  }
   if (exponent != 0) {
     Pslg in = input;
     Mesh m = mesh;
