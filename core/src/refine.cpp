@@ -71,7 +71,7 @@ class Refiner {
       cap += 4 * area / options.maxArea;
     }
     if (options.maxSteiner) cap = options.maxSteiner;
-    steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, 4.0e9));
+    steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, double(kMaxVertices)));
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < input.points.size(); ++i)
       lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
