@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
+#include <stdexcept>
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
@@ -22,7 +24,9 @@ std::string checkInput(const Pslg& in) {
     return "segments array has odd length " + std::to_string(in.segments.size());
   if (in.holes.size() % 2) return "holes array has odd length " + std::to_string(in.holes.size());
   size_t n = in.vertexCount();
-  if (n >= detail::kGhost) return "too many vertices (" + std::to_string(n) + ")";
+  if (n > detail::kMaxVertices)
+    return "too many vertices (" + std::to_string(n) + "; at most " +
+           std::to_string(detail::kMaxVertices) + ")";
   for (size_t i = 0; i < n; ++i)
     if (!std::isfinite(in.points[2 * i]) || !std::isfinite(in.points[2 * i + 1]))
       return "vertex " + std::to_string(i) + " has a non-finite coordinate";
@@ -354,11 +358,13 @@ Result meshInRange(const Pslg& input, const Options& options) {
 
 }  // namespace
 
+namespace {
+
 // The predicates are exact while products of coordinate differences neither overflow nor
 // underflow. Inputs far from 1 in magnitude (1e300, 1e-300), or with tiny features beside
 // large ones, are scaled by a power of two, meshed, and scaled back: exact, since only
 // exponents change. Inputs no power of two brings into range are refused.
-Result mesh(const Pslg& input, const Options& options) {
+Result meshScaled(const Pslg& input, const Options& options) {
   detail::CoordinateRange range;
   range.add(input.points);
   range.add(input.holes);
@@ -396,6 +402,31 @@ Result mesh(const Pslg& input, const Options& options) {
     return bad;
   }
   return r;
+}
+
+}  // namespace
+
+// Nothing throws, as promised in acutemesh.h: memory running out (an area bound or a Steiner
+// budget far beyond what fits, a huge input) ends the call with a message instead. Builds
+// without exceptions (Emscripten's default) abort on it instead.
+Result mesh(const Pslg& input, const Options& options) {
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
+  try {
+    return meshScaled(input, options);
+  } catch (const std::bad_alloc&) {
+  } catch (const std::length_error&) {
+  }
+  Result r;
+  r.status = Status::BadInput;
+  r.message = "out of memory: the input, or the refinement asked for, needs more memory than "
+              "is available (a Steiner budget or a time limit bounds refinement)";
+  r.stats.inputVertices = uint32_t(input.vertexCount());
+  r.stats.inputSegments = uint32_t(input.segmentCount());
+  r.stats.inputHoles = uint32_t(input.holes.size() / 2);
+  return r;
+#else
+  return meshScaled(input, options);
+#endif
 }
 
 }  // namespace acutemesh
