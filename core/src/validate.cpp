@@ -849,9 +849,12 @@ class Validator {
     if (hullOk) {
       // The hull of the input vertices: refinement splits hull edges at rounded points, so
       // the mesh's own hull may differ from it by rounding.
-      std::vector<uint8_t> usedInput = used_;
-      std::fill(usedInput.begin() + nIn_, usedInput.end(), 0);
-      hull = convexHull(m_.points, usedInput);
+      // Only input vertices count: a split point rounded outward would otherwise join the
+      // hull and push an input vertex of a nearly straight hull stretch off it
+      // (one-ulp-apart.node, nonobtuse).
+      std::vector<uint8_t> usedInput(used_.begin(), used_.begin() + nIn_);
+      std::vector<double> inputPoints(m_.points.begin(), m_.points.begin() + 2 * size_t(nIn_));
+      hull = convexHull(inputPoints, usedInput);
       hullNext.assign(n_, kNone);
       for (size_t i = 0; i < hull.size(); ++i) hullNext[hull[i]] = hull[(i + 1) % hull.size()];
     }
