@@ -97,8 +97,10 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
 // a right or obtuse corner (dot-product signs).
 // Runs on the store (vertices in insertion order) rather than on the output, whose input
 // numbering scatters neighbours across memory.
-void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, Stats& stats) {
+// Also returns the largest triangle area (floating point, as refinement measures it).
+double measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, Stats& stats) {
   double cosSmallest = -1, cosLargest = 1;  // of the smallest and the largest angle seen
+  double largestArea = 0;
   uint32_t nonAcute = 0, obtuse = 0, count = 0;
   for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
     if (!inside[t]) continue;
@@ -116,6 +118,7 @@ void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, S
     }
     nonAcute += right;
     obtuse += blunt;
+    largestArea = std::max(largestArea, 0.5 * std::fabs(orient2d(p[0], p[1], p[2])));
     int lo = 0, hi = 0;
     for (int k = 1; k < 3; ++k) {
       if (len2[k] < len2[lo]) lo = k;
@@ -134,6 +137,7 @@ void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, S
   stats.maxAngle = count ? degrees(cosLargest) : 0;
   stats.nonAcute = nonAcute;
   stats.obtuse = obtuse;
+  return largestArea;
 }
 
 // Smallest angle between two segments at a shared end (degrees), from the directions of the
@@ -182,7 +186,7 @@ void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats
 
 // Whether the refined mesh meets the target: exactly (dot-product signs) at 90 degrees, in
 // floating point for other angle bounds.
-void certify(const Options& options, Stats& stats, Result& result) {
+void certify(const Options& options, double largestArea, Stats& stats, Result& result) {
   bool met = true;
   if (options.mode == Mode::Acute) {
     met = stats.nonAcute == 0 && (options.maxAngle >= 90 || stats.maxAngle < options.maxAngle);
@@ -193,6 +197,8 @@ void certify(const Options& options, Stats& stats, Result& result) {
   }
   if (options.minAngle > 0 && stats.triangles > 0 && stats.minAngle < options.minAngle * (1 - 1e-9))
     met = false;
+  // An area bound counts too: a quality run stopped by its time limit has triangles above it.
+  if (options.maxArea > 0 && largestArea > options.maxArea) met = false;
   stats.targetMet = met;
   if (!met && result.status == Status::Ok) {
     result.status = Status::TargetNotMet;
@@ -349,8 +355,8 @@ Result meshInRange(const Pslg& input, const Options& options) {
   stats.steiner = stats.vertices - n;
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
-  measureAngles(T, inside, stats);
-  if (refining) certify(target, stats, result);
+  double largestArea = measureAngles(T, inside, stats);
+  if (refining) certify(target, largestArea, stats, result);
   endPhase("output");
   stats.seconds = budget.elapsed();
   return result;
