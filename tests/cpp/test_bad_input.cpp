@@ -311,3 +311,166 @@ TEST(BadInput, CorpusFilesMeetTheirExpectations) {
     }
   }
 }
+
+// A count the text cannot back up is refused before anything is sized by it: the largest
+// single allocation while reading stays small, whatever the count says.
+TEST(BadInput, CountsBeyondTheTextAllocateNothingLarge) {
+  for (const char* file :
+       {"vertex-count-far-larger-than-file.poly", "vertex-count-far-larger-than-file.node",
+        "segment-count-far-larger-than-file.poly", "hole-count-far-larger-than-file.poly",
+        "attribute-count-far-larger.node", "num-points-larger-than-given.json",
+        "vertex-count-beyond-32-bits.node", "deep-nesting.json"}) {
+    Input in;
+    std::string path = kBad + "/" + file;
+    gLargestAllocation = 0;
+    readInputFile(path, in);
+    // The file's own text (deep-nesting.json: 200 kB) is the largest thing read into memory.
+    EXPECT_LT(gLargestAllocation.load(), 256u * 1024) << file;
+  }
+}
+
+// Inputs far from 1 are meshed as their power-of-two normal form and scaled back exactly:
+// the same triangles, every coordinate exactly 2^k times the normal form's.
+TEST(BadInput, ScaledInputsMeshExactlyLikeTheirNormalForm) {
+  Input a = fixtures::load(fixtures::kData + "/A.poly");
+  double largest = 0;
+  for (double x : a.pslg.points) largest = std::max(largest, std::fabs(x));
+  int e;
+  std::frexp(largest, &e);
+  auto scaled = [&](int k) {
+    Pslg p = a.pslg;
+    for (double& x : p.points) x = std::ldexp(x, k);
+    for (double& x : p.holes) x = std::ldexp(x, k);
+    return p;
+  };
+  for (Mode mode : {Mode::Cdt, Mode::Quality, Mode::Acute}) {
+    Options o;
+    o.mode = mode;
+    if (mode == Mode::Quality) o.maxArea = 0.01;
+    Pslg normal = scaled(-e);  // largest coordinate in [0.5, 1): meshed unscaled
+    Result base = mesh(normal, o);
+    ASSERT_EQ(base.status, Status::Ok) << base.message;
+    for (int k : {-1000, -900, -300, -70, 70, 300, 900, 1000}) {
+      const std::string what = std::string(modeName(mode)) + " at 2^" + std::to_string(k);
+      Pslg far = scaled(k - e);
+      Options fo = o;
+      fo.maxArea = std::ldexp(o.maxArea, 2 * k);
+      if (std::ldexp(fo.maxArea, -2 * k) != o.maxArea) continue;  // the bound itself out of range
+      Result r = mesh(far, fo);
+      ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+      ASSERT_EQ(r.mesh.triangles, base.mesh.triangles) << what;
+      ASSERT_EQ(r.mesh.points.size(), base.mesh.points.size()) << what;
+      for (size_t i = 0; i < r.mesh.points.size(); ++i)
+        ASSERT_EQ(r.mesh.points[i], std::ldexp(base.mesh.points[i], k)) << what << " coordinate " << i;
+      EXPECT_EQ(fixtures::validationErrors(far, fo, r.mesh), "") << what;
+      EXPECT_EQ(r.stats.nonAcute, base.stats.nonAcute) << what;
+    }
+  }
+}
+
+// Tiny features beside large ones: lifted into range when the spread allows (2^-200 beside
+// 1 is 2^200 apart), refused when it does not, never meshed with underflowing predicates.
+TEST(BadInput, TinyFeaturesBesideLargeOnes) {
+  for (int k : {100, 150, 200, 229, 232, 300, 600}) {
+    Pslg in;
+    double t = std::ldexp(1.0, -k);
+    in.points = {0, 0, 2, 0, 2, 2, 0, 2, 1, 1, 1 + 0, 1, t, t, 2 * t, t, t, 2 * t};
+    in.points.erase(in.points.begin() + 10, in.points.begin() + 12);  // (1, 1) once
+    Options o;
+    o.mode = Mode::Delaunay;
+    Result r = mesh(in, o);
+    const std::string what = "2^-" + std::to_string(k);
+    if (k <= 229) {
+      ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+      EXPECT_EQ(r.stats.duplicates, 0u) << what;
+      EXPECT_EQ(fixtures::validationErrors(in, o, r.mesh), "") << what;
+      uint32_t clockwise = 0;
+      for (size_t i = 0; i < r.mesh.triangleCount(); ++i)
+        clockwise += exactref::orient2dSign(&r.mesh.points[2 * size_t(r.mesh.triangles[3 * i])],
+                                            &r.mesh.points[2 * size_t(r.mesh.triangles[3 * i + 1])],
+                                            &r.mesh.points[2 * size_t(r.mesh.triangles[3 * i + 2])]) <= 0;
+      EXPECT_EQ(clockwise, 0u) << what;
+      EXPECT_EQ(r.mesh.triangleCount(), 2 * 8 - 2 - 4u) << what;  // 8 points, 4 on the hull
+    } else {
+      EXPECT_EQ(r.status, Status::BadInput) << what;
+      EXPECT_NE(r.message.find("orders of magnitude"), std::string::npos) << r.message;
+    }
+  }
+}
+
+// Budgets bound every phase: a time limit far below what the job needs returns soon after
+// it with the best mesh so far, valid; so does a cancel flag set from another thread.
+Pslg randomPoints(int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  Pslg in;
+  for (int i = 0; i < n; ++i) in.points.push_back(u(rng)), in.points.push_back(u(rng));
+  return in;
+}
+
+double secondsOf(const std::function<void()>& f) {
+  auto t0 = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+TEST(BadInput, TimeLimitEndsRefinementWithAValidMesh) {
+  Pslg in = randomPoints(5000, 3);
+  for (Mode mode : {Mode::Quality, Mode::Acute}) {
+    Options o;
+    o.mode = mode;
+    o.maxArea = 1e-9;  // about 10^9 triangles: far more than the time allows
+    o.maxSteiner = 50000000;
+    o.timeLimit = 0.3;
+    Result r;
+    double seconds = secondsOf([&] { r = mesh(in, o); });
+    EXPECT_EQ(r.status, Status::TargetNotMet) << r.message;
+    EXPECT_NE(r.message.find("time limit"), std::string::npos) << r.message;
+    EXPECT_LT(seconds, 0.3 + 5) << modeName(mode);  // generous: sanitizer builds are slow
+    EXPECT_GT(r.stats.steiner, 0u);
+    expectSound(in, o, r, std::string("time limit ") + modeName(mode));
+  }
+}
+
+TEST(BadInput, CancelFromAnotherThreadEndsWithAValidMesh) {
+  Pslg in = randomPoints(5000, 4);
+  Options o;
+  o.mode = Mode::Quality;
+  o.maxArea = 1e-9;
+  o.maxSteiner = 50000000;
+  std::atomic<bool> cancel{false};
+  o.cancel = &cancel;
+  std::atomic<bool> started{false};
+  o.progress = [&](const Progress& p) {
+    if (std::string(p.phase) == "refine") started = true;
+  };
+  Result r;
+  double afterCancel = 0;
+  std::thread worker([&] { r = mesh(in, o); });
+  auto t0 = std::chrono::steady_clock::now();
+  while (!started && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  afterCancel = secondsOf([&] {
+    cancel = true;
+    worker.join();
+  });
+  EXPECT_TRUE(started);
+  EXPECT_EQ(r.status, Status::Cancelled) << r.message;
+  EXPECT_LT(afterCancel, 5.0);
+  EXPECT_GT(r.stats.steiner, 0u);
+  o.progress = nullptr;
+  expectSound(in, o, r, "cancelled");
+}
+
+// The automatic Steiner budget (no maxSteiner) holds too: a needle that no amount of
+// refinement makes acute stops at 50 points per input vertex, at least 20000.
+TEST(BadInput, AutomaticSteinerBudgetHolds) {
+  Input in = fixtures::load(kBad + "/needle-sliver-1e-15.poly");
+  Options o;
+  o.mode = Mode::Acute;
+  Result r = mesh(in.pslg, o);
+  EXPECT_NE(r.status, Status::BadInput) << r.message;
+  EXPECT_LE(r.stats.steiner, 20000u);
+  expectSound(in.pslg, o, r, "needle, automatic budget");
+}
