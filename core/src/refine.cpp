@@ -81,12 +81,16 @@ class Refiner {
     }
     if (options.maxSteiner) cap = options.maxSteiner;
     if (steinerCap) cap = std::min(cap, double(steinerCap));
-    steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, 4.0e9));
+    steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, double(kMaxVertices)));
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < input.points.size(); ++i)
       lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
     double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
-    minEdge2_ = std::pow(diagonal * std::ldexp(1.0, -24), 2);
+    // Far from the origin (an input moved by 1e15) the coordinates' own resolution is coarse:
+    // no edge shorter than 2^10 ulps of the largest coordinate, or split points round off
+    // their segments by a visible fraction of the edge.
+    double largest = std::max({-lo[0], -lo[1], hi[0], hi[1], 0.0});
+    minEdge2_ = std::pow(std::max(diagonal * std::ldexp(1.0, -24), largest * std::ldexp(1.0, -42)), 2);
     // Where the domain ends at an edge no segment lies on (point sets, --convex-hull), the
     // edge is a boundary all the same: fix it (with no segment) so the boundary rule applies.
     for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e)

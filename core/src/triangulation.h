@@ -19,6 +19,9 @@ namespace acutemesh::detail {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 constexpr uint32_t kGhost = 0xFFFFFFFEu;
+// Most vertices a triangulation may hold: about two triangles per vertex, three half-edges
+// each, all numbered by uint32 (kNone and kGhost reserved).
+constexpr uint32_t kMaxVertices = kNone / 6;
 
 inline uint32_t next(uint32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
 inline uint32_t prev(uint32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
