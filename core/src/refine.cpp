@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 
 #include "acutemesh/predicates.h"
 #include "build.h"
@@ -702,10 +703,11 @@ bool Refiner::repair(uint32_t t, Corner c) {
     }
   }
   if (c.large) {
-    // First try to repair the triangle by moving one of its Steiner points (seed 2.2).
+    // First try to repair the triangle by moving one of its Steiner points: a free one
+    // anywhere in its kernel (seed 2.2), one on a segment along the segment.
     for (int k = 0; k < 3; ++k) {
       uint32_t a = T_.tri[3 * t + k];
-      if (relocate(a)) {
+      if (relocate(a) || (!strictMax_ && slide(a))) {
         uint32_t e0 = T_.vertexEdge[a], e = e0;
         do {
           touched_.push_back(e / 3);
@@ -773,25 +775,7 @@ StepResult Refiner::run() {
 }
 
 StepResult Refiner::runSteps() {
-  StepResult result;
-  bool shortOfBound = false;
-  if (strictMax_) {
-    // A bound below 90 is best effort: half the budget goes to it; if that is not enough,
-    // the rest makes the mesh acute again, so a run that falls short still ends acute and
-    // certified (exit 1) rather than half refined.
-    uint32_t fullLimit = steinerLimit_;
-    steinerLimit_ = T_.vertexCount() + (fullLimit - T_.vertexCount()) / 2;
-    result = repairAll();
-    steinerLimit_ = fullLimit;
-    if (result.status == Status::Cancelled) return result;
-    if (!result.ok() || anyBad()) {
-      shortOfBound = true;
-      strictMax_ = false;
-      result = repairAll();
-    }
-  } else {
-    result = repairAll();
-  }
+  StepResult result = repairAll();
   if (!result.ok()) return result;
   // Improvement (acute / non-obtuse, where the point count is the score): remove what is not
   // needed. Putting a vertex back can differ from its old star where vertices are
@@ -800,9 +784,6 @@ StepResult Refiner::runSteps() {
     removeSteinerPoints();
     result = repairAll();
   }
-  if (result.ok() && shortOfBound)
-    return {Status::TargetNotMet, "the bound of " + std::to_string(options_.maxAngle) +
-                                      " degrees was not reached; the mesh is acute"};
   return result;
 }
 
@@ -1009,8 +990,13 @@ void Refiner::removeSteinerPoints() {
 // altitude feet (non-obtuse) often need far fewer points but now and then do not finish.
 // A later strategy stops as soon as it has used as many points as the best so far, so the
 // extra runs cost little where the first is already good.
-StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
-                  const Budget& budget, std::vector<uint8_t>& freeVertex) {
+namespace {
+
+// The strategies of refine() in turn; true if one met the target. steinerCap (0: none) bounds
+// each run's Steiner points.
+bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& options,
+                          const Budget& budget, uint32_t steinerCap,
+                          std::vector<uint8_t>& freeVertex, StepResult& bestResult) {
   std::vector<Strategy> strategies = {Strategy{}};
   if (options.mode == Mode::NonObtuse) {
     strategies.push_back({true, true, true});
@@ -1019,19 +1005,18 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
     strategies.push_back({false, false, true});
   }
   if (strategies.size() == 1) {
-    Refiner refiner(T, input, options, budget, strategies[0], 0);
-    StepResult result = refiner.run();
+    Refiner refiner(T, input, options, budget, strategies[0], steinerCap);
+    bestResult = refiner.run();
     refiner.markFree(freeVertex);
-    return result;
+    return bestResult.ok() && !refiner.anyBad();
   }
   const Triangulation start = T;
-  StepResult bestResult;
   bool haveBest = false, bestMet = false;
   for (const Strategy& strategy : strategies) {
     Triangulation work = start;
-    uint32_t cap = bestMet ? T.vertexCount() - start.vertexCount() : 0;
+    uint32_t cap = bestMet ? T.vertexCount() - start.vertexCount() : steinerCap;
     if (bestMet && cap <= 1) break;
-    Refiner refiner(work, input, options, budget, strategy, bestMet ? cap - 1 : 0);
+    Refiner refiner(work, input, options, budget, strategy, bestMet ? cap - 1 : cap);
     StepResult result = refiner.run();
     bool met = result.ok() && !refiner.anyBad();
     if (!haveBest || (met && (!bestMet || work.vertexCount() < T.vertexCount()))) {
@@ -1043,7 +1028,38 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
     }
     if (result.status == Status::Cancelled || budget.stop()) break;
   }
-  return bestResult;
+  return bestMet;
+}
+
+}  // namespace
+
+// Acute and non-obtuse runs try a few boundary strategies on copies of the triangulation and
+// keep the result that meets the target with the fewest Steiner points: the corner fans
+// everywhere are the safe way (they settle every small angle), fans built lazily and altitude
+// feet (non-obtuse) often need far fewer points but now and then do not finish. A later
+// strategy stops as soon as it has used as many points as the best so far, so the extra runs
+// cost little where the first is already good.
+// A bound below 90 degrees is best effort: if no strategy reaches it with half the Steiner
+// budget, the input is meshed acute from the start again, so a run that falls short still ends
+// acute and certified (exit 1) rather than half refined.
+StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
+                  const Budget& budget, std::vector<uint8_t>& freeVertex) {
+  StepResult result;
+  if (options.mode != Mode::Acute || !(options.maxAngle < 90)) {
+    refineWithStrategies(T, input, options, budget, 0, freeVertex, result);
+    return result;
+  }
+  const Triangulation start = T;
+  uint32_t half = std::max<uint32_t>(1, (options.maxSteiner ? options.maxSteiner
+                                                            : uint32_t(std::max(20000.0, 50.0 * input.vertexCount()))) / 2);
+  if (refineWithStrategies(T, input, options, budget, half, freeVertex, result)) return result;
+  if (result.status == Status::Cancelled) return result;
+  Options acute = options;
+  acute.maxAngle = 90;
+  T = start;
+  if (!refineWithStrategies(T, input, acute, budget, 0, freeVertex, result)) return result;
+  return {Status::TargetNotMet, "the bound of " + std::to_string(options.maxAngle) +
+                                    " degrees was not reached; the mesh is acute"};
 }
 
 }  // namespace acutemesh::detail
