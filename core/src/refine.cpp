@@ -780,7 +780,14 @@ StepResult Refiner::runSteps() {
   // Improvement (acute / non-obtuse, where the point count is the score): remove what is not
   // needed. Putting a vertex back can differ from its old star where vertices are
   // cocircular, so whatever that spoilt is repaired again.
+  // The fans have done their work once the target is met: their points may go too, as long
+  // as what fills their place meets the target.
   if (acute_ || nonObtuse_) {
+    releaseChords();
+    for (size_t v = 0; v < role_.size(); ++v) {
+      if (role_[v] == kArc) role_[v] = kFree;
+      fanCenter_[v] = kNone;
+    }
     removeSteinerPoints();
     result = repairAll();
   }
