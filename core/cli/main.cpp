@@ -132,6 +132,11 @@ void printStats(const std::string& input, const Options& opt, const Result& r,
   std::printf(" \"targetMet\": %s, \"certified\": %s, \"smallestInputAngle\": %.17g,\n",
               s.targetMet ? "true" : "false", s.certified ? "true" : "false",
               s.smallestInputAngle);
+  // Triangles (indices into the written .ele / "triangles") that miss the target.
+  std::printf(" \"missedTriangles\": [");
+  for (size_t i = 0; i < s.missedTriangles.size(); ++i)
+    std::printf("%s%u", i ? ", " : "", s.missedTriangles[i]);
+  std::printf("],\n");
   std::printf(" \"seconds\": {");
   double total = 0;
   for (size_t i = 0; i < phases.size(); ++i) {

@@ -184,6 +184,29 @@ void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats
                              " cannot be met");
 }
 
+// The output triangles that miss the refinement target (the first kMaxMissedListed), for
+// Stats::missedTriangles: exact at 90 degrees, floating point for other bounds.
+void listMissedTriangles(const Options& options, const Mesh& mesh, Stats& stats) {
+  const double cosMax = std::cos(options.maxAngle * M_PI / 180), cosMin = std::cos(options.minAngle * M_PI / 180);
+  stats.missedTriangles.clear();
+  for (size_t t = 0; t < mesh.triangleCount() && stats.missedTriangles.size() < kMaxMissedListed; ++t) {
+    const double* p[3];
+    for (int k = 0; k < 3; ++k) p[k] = &mesh.points[2 * size_t(mesh.triangles[3 * t + k])];
+    bool miss = false;
+    for (int k = 0; k < 3 && !miss; ++k) {
+      const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+      double d = dot2d(a, b, c);
+      double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+      double cosine = (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
+      if (options.mode == Mode::Acute) miss = d <= 0 || (options.maxAngle < 90 && cosine <= cosMax);
+      if (options.mode == Mode::NonObtuse) miss = d < 0;
+      if (options.minAngle > 0 && cosine > cosMin * (1 + 1e-12)) miss = true;
+    }
+    if (options.maxArea > 0 && 0.5 * std::fabs(orient2d(p[0], p[1], p[2])) > options.maxArea) miss = true;
+    if (miss) stats.missedTriangles.push_back(uint32_t(t));
+  }
+}
+
 // Whether the refined mesh meets the target: exactly (dot-product signs) at 90 degrees, in
 // floating point for other angle bounds.
 void certify(const Options& options, double largestArea, Stats& stats, Result& result) {
@@ -200,6 +223,7 @@ void certify(const Options& options, double largestArea, Stats& stats, Result& r
   // An area bound counts too: a quality run stopped by its time limit has triangles above it.
   if (options.maxArea > 0 && largestArea > options.maxArea) met = false;
   stats.targetMet = met;
+  if (!met) listMissedTriangles(options, result.mesh, stats);
   if (!met && result.status == Status::Ok) {
     result.status = Status::TargetNotMet;
     uint32_t missing = options.mode == Mode::Acute       ? stats.nonAcute

@@ -127,6 +127,36 @@ TEST(Refine, BudgetsAndCancelReturnAValidBestMesh) {
   expectValid(in, o, c, "cancelled");
 }
 
+// A run stopped by its budget lists exactly the triangles that miss the target.
+TEST(Refine, StatsListTheTrianglesThatMissTheTarget) {
+  Pslg in = load(kData + "/A.poly");
+  for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
+    Options o;
+    o.mode = mode;
+    o.maxSteiner = 10;
+    Result r = mesh(in, o);
+    ASSERT_EQ(r.status, Status::TargetNotMet) << r.message;
+    std::vector<uint32_t> expected;
+    for (uint32_t t = 0; t < r.mesh.triangleCount(); ++t) {
+      bool miss = false;
+      for (int k = 0; k < 3; ++k) {
+        const double* a = &r.mesh.points[2 * size_t(r.mesh.triangles[3 * t + k])];
+        const double* b = &r.mesh.points[2 * size_t(r.mesh.triangles[3 * t + (k + 1) % 3])];
+        const double* c = &r.mesh.points[2 * size_t(r.mesh.triangles[3 * t + (k + 2) % 3])];
+        double d = dot2d(a, b, c);
+        miss |= mode == Mode::Acute ? d <= 0 : d < 0;
+      }
+      if (miss) expected.push_back(t);
+    }
+    EXPECT_FALSE(expected.empty());
+    EXPECT_EQ(r.stats.missedTriangles, expected);
+    EXPECT_EQ(expected.size(), mode == Mode::Acute ? r.stats.nonAcute : r.stats.obtuse);
+  }
+  Options o;
+  o.mode = Mode::Acute;
+  EXPECT_TRUE(mesh(in, o).stats.missedTriangles.empty());
+}
+
 TEST(Refine, FillRuleRingsAndPointSets) {
   Pslg rings;  // a square with a square hole, by even-odd nesting
   rings.points = {0, 0, 10, 0, 10, 10, 0, 10, 3, 3, 3, 7, 7, 7, 7, 3};

@@ -98,6 +98,8 @@ struct PhaseTime {
   double seconds;
 };
 
+constexpr size_t kMaxMissedListed = 1000;
+
 struct Stats {
   uint32_t inputVertices = 0, inputSegments = 0, inputHoles = 0;
   uint32_t vertices = 0, triangles = 0, segments = 0;  // of the output mesh
@@ -111,6 +113,9 @@ struct Stats {
   // Smallest angle between two input segments at a vertex (degrees; 180 when no two segments
   // meet). No mesh has all angles below 90 - smallestInputAngle / 2.
   double smallestInputAngle = 180;
+  // When the target is not met: indices (into Mesh::triangles, triangle i = corners 3i..3i+2)
+  // of the triangles that miss it, the first kMaxMissedListed of them.
+  std::vector<uint32_t> missedTriangles;
   std::vector<PhaseTime> phases;    // wall time per phase
   double seconds = 0;               // total wall time of mesh()
   std::vector<std::string> warnings;
