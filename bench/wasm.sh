@@ -40,7 +40,7 @@ if [[ ! -s bench/work/uniform-1e6.node ]]; then
 fi
 
 out="bench/results/wasm-$(date +%F).md"
-EMCC_VERSION="$(emcc --version | head -n1)" WASM_BENCH_RUNS="$RUNS" \
+EMCC_VERSION="$(emcc --version | head -n1 | grep -oE '[0-9]+\.[0-9]+\.[0-9]+' | head -n1)" WASM_BENCH_RUNS="$RUNS" \
   node bench/wasm.mjs "$NATIVE" "$out"
 echo
 cat "$out"

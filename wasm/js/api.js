@@ -273,8 +273,9 @@ function instantiate(factory, compiled, memoryLimit) {
   return Promise.race([factory(moduleArgs(compiled, memoryLimit, false, (e) => fail(e))), failed]);
 }
 
-// Synchronously, or null where the platform refuses (Chromium's main thread does for modules
-// over 4 KB). After new WebAssembly.Instance the glue starts the runtime before the factory
+// Synchronously, or null where the platform refuses (browsers have limited synchronous
+// compilation on the main thread; instantiating an already compiled module works in Node, in
+// workers and on Chromium's main thread). After new WebAssembly.Instance the glue starts the runtime before the factory
 // returns, so the bindings are on `args` at once.
 function instantiateNow(factory, compiled, memoryLimit) {
   try {
