@@ -273,10 +273,10 @@ function instantiate(factory, compiled, memoryLimit) {
   return Promise.race([factory(moduleArgs(compiled, memoryLimit, false, (e) => fail(e))), failed]);
 }
 
-// Synchronously, or null where the platform refuses (browsers have limited synchronous
-// compilation on the main thread; instantiating an already compiled module works in Node, in
-// workers and on Chromium's main thread). After new WebAssembly.Instance the glue starts the runtime before the factory
-// returns, so the bindings are on `args` at once.
+// Synchronously, or null where the platform refuses (browsers limit synchronous compilation
+// on the main thread; instantiating an already compiled module works in Node, in workers and
+// on Chromium's main thread). After new WebAssembly.Instance the glue starts the runtime
+// before the factory returns, so the bindings are on `args` at once.
 function instantiateNow(factory, compiled, memoryLimit) {
   try {
     const args = moduleArgs(compiled, memoryLimit, true);

@@ -18,7 +18,8 @@ async function compile(options) {
   const response = await fetch(url);
   if (!response.ok) throw new Error(`acutemesh: cannot load ${url} (HTTP ${response.status})`);
   // Streaming compilation needs the server to send application/wasm; fall back to the bytes.
-  if (WebAssembly.compileStreaming && response.headers.get('content-type') === 'application/wasm')
+  const type = response.headers.get('content-type') || '';
+  if (WebAssembly.compileStreaming && type.startsWith('application/wasm'))
     return WebAssembly.compileStreaming(response);
   return WebAssembly.compile(await response.arrayBuffer());
 }
