@@ -69,7 +69,8 @@ console.log(JSON.stringify({ out, single: s.stats.certified, worker: w.stats.cer
   assert.equal(result.single, true);
   assert.equal(result.worker, true);
 
-  // Types from node_modules, as TypeScript users resolve them.
+  // Types from node_modules, as TypeScript users resolve them: through the exports map
+  // (nodenext, bundler), or through "types" and "typesVersions" (the older node10).
   writeFileSync(join(app, 'use.mts'), `
 import init, { AcuteMeshError, type MeshResult } from 'acutemesh';
 import initSingle from 'acutemesh/single';
@@ -80,7 +81,7 @@ const e = new AcuteMeshError('BAD_INPUT', 'x');
 void [m.stats.certified, e.code, initSingle, createMeshWorker];
 `);
   const tsc = join(root, 'node_modules', 'typescript', 'bin', 'tsc');
-  for (const resolution of [['nodenext', 'nodenext'], ['esnext', 'bundler']]) {
+  for (const resolution of [['nodenext', 'nodenext'], ['esnext', 'bundler'], ['esnext', 'node10']]) {
     let output = '';
     try {
       sh(process.execPath, [tsc, '--noEmit', '--strict', '--target', 'es2022', '--lib', 'es2022,dom',
