@@ -126,4 +126,11 @@ lines.push(`| dist/acutemesh.wasm | ${kb(wasmBytes.length)} | ${kb(gz(wasmBytes)
 lines.push(`| dist/acutemesh.mjs (Emscripten glue) | ${kb(glueBytes.length)} | ${kb(gz(glueBytes))} |`);
 lines.push(`| the facade's .js files (without wasm-inline.js) | ${kb(facade)} | |`);
 lines.push('');
+const worst = Math.max(...refine.map((r) => r.wasm.ms / r.native.ms), del.wasm.ms / del.native.ms);
+const met = (ok) => (ok ? 'met' : '**not met**');
+lines.push('Targets (issue 4):');
+lines.push(`- wasm within 1.5x of native on every case above: ${met(worst <= 1.5)} (worst ${worst.toFixed(2)}).`);
+lines.push(`- Delaunay of 10^6 points faster than delaunator: ${met(del.wasm.ms < del.delaunator.ms)}.`);
+lines.push(`- .wasm at most 150 KB gzipped: ${met(gz(wasmBytes) <= 150 * 1024)}.`);
+lines.push('');
 writeFileSync(out, lines.join('\n'));
