@@ -13,9 +13,9 @@ import { testData } from './helpers.mjs';
 const am = await init();
 const pslg = am.parsePoly(readFileSync(join(testData, 'A.poly'), 'utf8'));
 const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
-const slow = { mode: 'quality', maxArea: 2e-6 };  // about a million triangles: seconds of work
+const slow = { mode: 'quality', maxArea: 4e-6 };  // about 500,000 triangles: a second or more of work
 
-test('a mesh from the worker equals the one made here, with progress', async () => {
+test('a mesh from the worker equals the one made here, with progress', { timeout: 120000 }, async () => {
   const worker = createMeshWorker();
   try {
     const phases = [];
@@ -36,7 +36,7 @@ test('a mesh from the worker equals the one made here, with progress', async () 
   }
 });
 
-test('errors come back as AcuteMeshError / TypeError', async () => {
+test('errors come back as AcuteMeshError / TypeError', { timeout: 120000 }, async () => {
   const worker = createMeshWorker();
   try {
     await assert.rejects(worker.mesh({ points: [0, 0, 1, 0], segments: [0, 9] }),
@@ -49,14 +49,14 @@ test('errors come back as AcuteMeshError / TypeError', async () => {
   }
 });
 
-test('abort terminates the busy worker promptly; the next call gets a fresh one', async () => {
+test('abort terminates the busy worker promptly; the next call gets a fresh one', { timeout: 120000 }, async () => {
   const worker = createMeshWorker();
   try {
     // How long the slow job takes to run through.
     const t0 = performance.now();
     const full = await worker.mesh(square, slow);
     const fullMs = performance.now() - t0;
-    assert.ok(full.stats.triangles > 500000);
+    assert.ok(full.stats.triangles > 250000);
 
     const controller = new AbortController();
     let sawRefine = false;
@@ -91,7 +91,20 @@ test('abort terminates the busy worker promptly; the next call gets a fresh one'
   }
 });
 
-test('meshInWorker uses one shared worker; terminate rejects pending calls', async () => {
+test('an exception in onProgress rejects the call; the next queued call still runs', { timeout: 120000 }, async () => {
+  const worker = createMeshWorker();
+  try {
+    const oops = new RangeError('progress handler failed');
+    const failing = worker.mesh(square, { ...slow, onProgress: () => { throw oops; } });
+    const next = worker.mesh(pslg, { mode: 'acute' });
+    await assert.rejects(failing, (e) => e === oops);
+    assert.ok((await next).stats.certified);
+  } finally {
+    worker.terminate();
+  }
+});
+
+test('meshInWorker uses one shared worker; terminate rejects pending calls', { timeout: 120000 }, async () => {
   const m = await meshInWorker(square, { mode: 'acute' });
   assert.ok(m.stats.certified);
   const worker = createMeshWorker();

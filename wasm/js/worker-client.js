@@ -49,8 +49,10 @@ export function makeWorkerHelper(spawn) {
             try {
               active.onProgress(message.progress);
             } catch (e) {
+              // The job cannot be told to stop any other way; stop the worker before the next
+              // job is posted to it.
+              stopWorker();
               finish(active, null, e);
-              stopWorker();  // the job cannot be told to stop any other way
             }
           }
         } else if (message.type === 'result') {
