@@ -43,6 +43,8 @@ test('errors come back as AcuteMeshError / TypeError', { timeout: 120000 }, asyn
       (e) => e instanceof AcuteMeshError && e.code === 'BAD_INPUT' && /segment 0 refers to vertex 9/.test(e.message));
     await assert.rejects(worker.mesh({ points: 'x' }), (e) => e instanceof TypeError);
     await assert.rejects(worker.mesh(square, { onProgress: 3 }), TypeError);
+    // Input that cannot be posted to a worker is rejected, and the queue goes on.
+    await assert.rejects(worker.mesh({ points: [0, 0, 1, 0, 0, 1], extra: () => {} }), (e) => e.name === 'DataCloneError');
     assert.ok((await worker.mesh(square)).stats.triangles > 0);  // still usable
   } finally {
     worker.terminate();

@@ -85,9 +85,15 @@ export function makeWorkerHelper(spawn) {
       if (active || queue.length === 0) return;
       const job = queue.shift();
       active = job;
-      const w = ensureWorker();
-      w.busy(true);
-      w.post({ id: job.id, pslg: job.pslg, options: job.options, initOptions });
+      try {
+        const w = ensureWorker();
+        w.busy(true);
+        w.post({ id: job.id, pslg: job.pslg, options: job.options, initOptions });
+      } catch (e) {
+        // No worker (the platform refused one), or input that cannot be cloned (functions,
+        // say): this job fails, the queue goes on.
+        finish(job, null, e);
+      }
     }
 
     function mesh(pslg, options = {}) {
