@@ -49,6 +49,23 @@ val toJs(const std::vector<T>& v) {
   return val(emscripten::typed_memory_view(v.size(), v.data())).call<val>("slice");
 }
 
+// Text in and out as UTF-8 bytes (a Uint8Array from the facade's TextEncoder; a string made by
+// TextDecoder) rather than through Embind's std::string conversion, whose buffer comes from a
+// malloc nobody checks: with the heap full it would write through a null pointer. Here the
+// buffer is allocated by operator new, so a big text meets the out-of-memory handler instead.
+std::string textFromJs(const val& bytes) {
+  std::string s(bytes["length"].as<size_t>(), '\0');
+  val(emscripten::typed_memory_view(s.size(), reinterpret_cast<uint8_t*>(s.data())))
+      .call<void>("set", bytes);
+  return s;
+}
+
+val textToJs(const std::string& s) {
+  static const val decoder = val::global("TextDecoder").new_();
+  return decoder.call<val>(
+      "decode", val(emscripten::typed_memory_view(s.size(), reinterpret_cast<const uint8_t*>(s.data()))));
+}
+
 val stringsToJs(const std::vector<std::string>& strings) {
   val out = val::array();
   for (const std::string& s : strings) out.call<void>("push", s);
@@ -164,28 +181,27 @@ val inputToJs(const ParseResult& r, const Input& in) {
   return out;
 }
 
-val parsePolyJs(const std::string& text, const std::string& name, const std::string& nodeText,
+val parsePolyJs(const val& text, const std::string& name, const val& nodeText,
                 const std::string& nodeName) {
   Input in;
-  ParseResult r = parsePoly(text, name, in, nodeText, nodeName);
+  ParseResult r = parsePoly(textFromJs(text), name, in, textFromJs(nodeText), nodeName);
   return inputToJs(r, in);
 }
 
-val parseNodeJs(const std::string& text, const std::string& name) {
+val parseNodeJs(const val& text, const std::string& name) {
   Input in;
-  ParseResult r = parseNode(text, name, in);
+  ParseResult r = parseNode(textFromJs(text), name, in);
   return inputToJs(r, in);
 }
 
-val parseJsonJs(const std::string& text, const std::string& name) {
+val parseJsonJs(const val& text, const std::string& name) {
   Input in;
-  ParseResult r = parseJson(text, name, in);
+  ParseResult r = parseJson(textFromJs(text), name, in);
   return inputToJs(r, in);
 }
 
 // Writers, by format name (the facade only passes the names below).
-std::string formatJs(const std::string& format, const val& m) {
-  Mesh mesh = meshFromJs(m);
+std::string formatText(const std::string& format, const Mesh& mesh) {
   if (format == "node") return formatNode(mesh);
   if (format == "ele") return formatEle(mesh);
   if (format == "poly") return formatPoly(mesh);
@@ -196,8 +212,12 @@ std::string formatJs(const std::string& format, const val& m) {
   return {};
 }
 
-std::string formatCgshopJs(const val& m, const std::string& uid, uint32_t instanceVertices) {
-  return formatCgshopSolution(meshFromJs(m), uid, instanceVertices);
+val formatJs(const std::string& format, const val& m) {
+  return textToJs(formatText(format, meshFromJs(m)));
+}
+
+val formatCgshopJs(const val& m, const std::string& uid, uint32_t instanceVertices) {
+  return textToJs(formatCgshopSolution(meshFromJs(m), uid, instanceVertices));
 }
 
 // The wasm heap: its size (grows, never shrinks) and the bytes malloc has handed out and not

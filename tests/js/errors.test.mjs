@@ -115,5 +115,11 @@ test('out of memory: AcuteMeshError OUT_OF_MEMORY, then the same object works ag
   assert.ok(m.stats.triangles > 190000);
   rejects(() => small.mesh({ points }, { mode: 'delaunay' }), 'OUT_OF_MEMORY', /out of memory/);
   stillWorks(small);
+  // A text too big for the heap: the parser's copy of it cannot be allocated.
+  const lines = ['3000000 2 0 0'];
+  for (let i = 0; i < 3e6; ++i) lines.push(`${i} ${points[i % points.length]} ${points[(i + 1) % points.length]}`);
+  rejects(() => small.parseNode(lines.join('\n')), 'OUT_OF_MEMORY', /out of memory/);
+  assert.deepEqual(small.memory(), start);
+  stillWorks(small);
   stillWorks(am);  // other instances were never affected
 });

@@ -20,6 +20,8 @@ const FORMATS = ['Unknown', 'Poly', 'Node', 'JsonPslg', 'CgshopInstance'];  // I
 const WASM_PAGE = 65536;
 const INITIAL_MEMORY = 16 * 1024 * 1024;  // -sINITIAL_MEMORY in wasm/CMakeLists.txt
 
+const utf8 = new TextEncoder();  // texts go to wasm as UTF-8 bytes (see bindings.cpp)
+
 const describe = (v) => (v === null ? 'null' : Array.isArray(v) ? 'an array' : typeof v);
 
 function badInput(message) {
@@ -342,14 +344,14 @@ function makeApi(factory, compiled, memoryLimit, M) {
       const nodeText = options.nodeText === undefined ? '' : options.nodeText;
       checkText(nodeText, 'options.nodeText');
       const nodeName = name.replace(/\.poly$/i, '') + '.node';
-      return parsed(call((I) => I.core_parsePoly(text, name, nodeText, nodeName)));
+      return parsed(call((I) => I.core_parsePoly(utf8.encode(text), name, utf8.encode(nodeText), nodeName)));
     },
 
     parseNode(text, options = {}) {
       checkText(text, 'text');
       checkObject(options, 'options');
       const name = options.name === undefined ? 'input.node' : String(options.name);
-      return parsed(call((I) => I.core_parseNode(text, name)));
+      return parsed(call((I) => I.core_parseNode(utf8.encode(text), name)));
     },
 
     // JSON in any of the core's three shapes: a PSLG, {"rings": ...} (fill 'evenodd' unless
@@ -358,7 +360,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
       checkText(text, 'text');
       checkObject(options, 'options');
       const name = options.name === undefined ? 'input.json' : String(options.name);
-      const r = call((I) => I.core_parseJson(text, name));
+      const r = call((I) => I.core_parseJson(utf8.encode(text), name));
       const out = parsed(r, r.ok && r.hasRings ? 'evenodd' : undefined);
       if (r.ok && FORMATS[r.format] === 'CgshopInstance') out.instanceUid = r.instanceUid;
       return out;
