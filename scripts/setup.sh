@@ -18,7 +18,9 @@ REQUIREMENTS=(
   "g++:g++"
   "make|ninja:make"
   "/usr/include/gtest/gtest.h:libgtest-dev"
-  "emcc:emscripten"
+  "clang++:clang"                     # libFuzzer harnesses (scripts/fuzz.sh)
+  "/usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a|/usr/lib/llvm-14/lib/clang/14/lib/linux/libclang_rt.fuzzer-x86_64.a:libclang-rt-14-dev"
+  "emcc:emscripten"                   # the WebAssembly build (npm package)
 )
 # ---------------------------------------------------------------------------------------------
 

@@ -9,6 +9,10 @@ bash scripts/build.sh
 
 # --- C++ tests (native) ----------------------------------------------------------------------
 ctest --test-dir build --output-on-failure -j2
+# The same suite under ASan + UBSan (build-asan/), and each libFuzzer harness for a bounded
+# time (build-fuzz/; FUZZ_SECONDS, default 60 in all). Both build once, then only rebuild.
+bash scripts/test-sanitize.sh
+bash scripts/fuzz.sh
 
 # --- JavaScript / WebAssembly tests (node) ---------------------------------------------------
 # The C++ suite built with emcc, each test run by node (the toolchain's emulator).

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <new>
+#include <stdexcept>
 #include <unistd.h>
 #include <string>
 #include <vector>
@@ -149,7 +151,7 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
   std::string input, output;
   std::vector<std::string> formats{"node", "ele"};
   bool cgshop = false;  // --format cgshop: BASE.solution.json, written apart from the others
@@ -320,4 +322,17 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+// Memory running out anywhere (reading a huge file, writing a huge mesh) is an error line
+// and exit status 2 like any other, not an abort.
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fputs("acutemesh: error: out of memory\n", stderr);
+  } catch (const std::length_error&) {
+    std::fputs("acutemesh: error: out of memory (a size beyond what a vector can hold)\n", stderr);
+  }
+  return 2;
 }

@@ -65,10 +65,21 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
                   const Budget& budget, std::vector<uint8_t>& freeVertex);
 
 // The predicates are exact while products of coordinate differences neither overflow nor
-// underflow. rangeExponent gives the power of two to divide by when the input's largest
-// coordinate is far from 1 (beyond 2^+-64), else 0; scaleExactly multiplies by 2^exponent,
-// false if a non-zero value would become subnormal (too wide a range to scale).
-int rangeExponent(const Pslg& in);
+// underflow: every non-zero coordinate within about 2^-166 .. 2^166 (see predicates.h).
+// CoordinateRange collects the binary exponents (frexp) of the largest and of the smallest
+// non-zero magnitude; exactScale picks the power of two to divide by: 0 when the largest is
+// within 2^+-64 and the smallest above 2^-166 (most inputs), else one that brings the largest
+// near 1 (or to 2^64 when the spread needs it). False when no power of two does: the
+// coordinates are more than 2^230 apart in magnitude. scaleExactly multiplies by
+// 2^exponent, false if a non-zero value would lose bits (become subnormal).
+struct CoordinateRange {
+  int largest = 0, smallest = 0;  // frexp exponents; meaningless while empty
+  bool empty = true;
+  bool finite = true;
+  void add(const std::vector<double>& xy);
+};
+bool exactScale(const CoordinateRange& range, int& exponent);
+std::string rangeMessage(const CoordinateRange& range);
 bool scaleExactly(std::vector<double>& xy, int exponent);
 
 }  // namespace acutemesh::detail

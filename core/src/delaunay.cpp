@@ -63,7 +63,8 @@ StepResult buildDelaunay(Triangulation& T, const std::vector<double>& points,
   uint32_t count = uint32_t(points.size() / 2);
   if (count < 3)
     return {Status::BadInput, "input has " + std::to_string(count) +
-                                  " vertices; a triangulation needs at least 3"};
+                                  (count == 1 ? " vertex" : " vertices") +
+                                  "; a triangulation needs at least 3"};
   // Vertices are stored in insertion order: neighbours in the mesh are then neighbours in
   // memory, which matters more than anything else for speed on large inputs.
   inputOf = hilbertOrder(points, count);

@@ -15,6 +15,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <new>
+#include <stdexcept>
 #include <utility>
 
 // Floating-point std::from_chars where the library has it (libstdc++ >= 11, MSVC); strtod
@@ -57,19 +59,28 @@ ParseResult failure(std::string message) {
   return r;
 }
 
-// A token quoted for a message, shortened if long.
-std::string quote(std::string_view t) {
-  constexpr size_t kMax = 40;
-  std::string s = "'";
-  if (t.size() > kMax) {
-    s.append(t.data(), kMax);
-    s += "...";
-  } else {
-    s.append(t.data(), t.size());
+// Input text as it may appear in a one-line message: control characters, DEL and bytes
+// above 0x7F (random bytes, or UTF-8 that a terminal may not show) become \xNN, so a message
+// never breaks its line or carries a terminal escape; shortened to `max` bytes of input.
+std::string printable(std::string_view t, size_t max = 40) {
+  std::string s;
+  const size_t n = t.size() > max ? max : t.size();
+  for (size_t i = 0; i < n; ++i) {
+    const unsigned char ch = static_cast<unsigned char>(t[i]);
+    if (ch < 0x20 || ch >= 0x7F) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", ch);
+      s += buf;
+    } else {
+      s += static_cast<char>(ch);
+    }
   }
-  s += "'";
+  if (t.size() > max) s += "...";
   return s;
 }
+
+// A token quoted for a message.
+std::string quote(std::string_view t) { return "'" + printable(t) + "'"; }
 
 // ------------------------------------------------------------------------------------------
 // Numbers
@@ -963,7 +974,7 @@ class JsonReader {
         ++e;
       }
       std::string_view t = s_.substr(pos, e - pos + (e < s_.size() && s_[e] == '"' ? 1 : 0));
-      return "the string " + std::string(t);
+      return "the string " + printable(t, 42);
     }
     if (ch == '{' || ch == '}' || ch == '[' || ch == ']' || ch == ',' || ch == ':')
       return std::string("'") + ch + "'";
@@ -1062,7 +1073,8 @@ class JsonReader {
         }
         default:
           return c_.fail(line_, std::string("expected an escape (\\\" \\\\ \\/ \\b \\f \\n \\r "
-                                            "\\t \\uXXXX), found '\\") + esc + "'");
+                                            "\\t \\uXXXX), found '\\") +
+                                printable(std::string_view(&esc, 1)) + "'");
       }
     }
   }
@@ -1236,7 +1248,8 @@ class JsonReader {
       if (h >= '0' && h <= '9') d = static_cast<uint32_t>(h - '0');
       else if (h >= 'a' && h <= 'f') d = static_cast<uint32_t>(h - 'a' + 10);
       else if (h >= 'A' && h <= 'F') d = static_cast<uint32_t>(h - 'A' + 10);
-      else return c_.fail(line_, std::string("expected 4 hex digits after '\\u', found '") + h + "'");
+      else return c_.fail(line_, "expected 4 hex digits after '\\u', found '" +
+                               printable(std::string_view(&h, 1)) + "'");
       v = v * 16 + d;
       ++p_;
     }
@@ -1385,7 +1398,7 @@ bool readMember(JsonReader& r, JsonDoc& d, const std::string& key, size_t keyLin
   Ctx& c = r.ctx();
   const JsonKind k = keyKind(key);
   if (k == JsonKind::None) {
-    c.warn(keyLine, "ignored the unknown key \"" + key + "\"");
+    c.warn(keyLine, "ignored the unknown key \"" + printable(key) + "\"");
     return r.skipValue(1);
   }
   if (d.kind == JsonKind::None) {
@@ -1540,7 +1553,7 @@ bool parseJsonImpl(std::string_view text, Ctx& c, Input& in) {
       const size_t keyLine = r.line();
       if (!r.string(key, "a key string")) return false;
       for (const std::string& s : seen)
-        if (s == key) return c.fail(keyLine, "expected each key once, found \"" + key + "\" again");
+        if (s == key) return c.fail(keyLine, "expected each key once, found \"" + printable(key) + "\" again");
       seen.push_back(key);
       if (!r.expect(':', "':' after the key") || !readMember(r, d, key, keyLine)) return false;
       r.ws();
@@ -1651,7 +1664,9 @@ ParseResult parseJson(std::string_view text, const std::string& name, Input& out
   return {};
 }
 
-ParseResult readInputFile(const std::string& path, Input& out) {
+namespace {
+
+ParseResult readInputFileOrThrow(const std::string& path, Input& out) {
   const std::string ext = lowerExtension(path);
   if (ext != ".poly" && ext != ".node" && ext != ".json")
     return failure(path + ": expected the extension .poly, .node or .json, found " +
@@ -1667,6 +1682,22 @@ ParseResult readInputFile(const std::string& path, Input& out) {
     return parsePoly(text, path, out, nodeText, nodePath);
   }
   return parsePoly(text, path, out);
+}
+
+}  // namespace
+
+// A file larger than memory (or a parse of it) ends with a message, not an exception.
+ParseResult readInputFile(const std::string& path, Input& out) {
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
+  try {
+    return readInputFileOrThrow(path, out);
+  } catch (const std::bad_alloc&) {
+  } catch (const std::length_error&) {
+  }
+  return failure(path + ": out of memory reading it");
+#else
+  return readInputFileOrThrow(path, out);
+#endif
 }
 
 }  // namespace acutemesh

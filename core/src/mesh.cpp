@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
+#include <stdexcept>
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
@@ -22,7 +24,9 @@ std::string checkInput(const Pslg& in) {
     return "segments array has odd length " + std::to_string(in.segments.size());
   if (in.holes.size() % 2) return "holes array has odd length " + std::to_string(in.holes.size());
   size_t n = in.vertexCount();
-  if (n >= detail::kGhost) return "too many vertices (" + std::to_string(n) + ")";
+  if (n > detail::kMaxVertices)
+    return "too many vertices (" + std::to_string(n) + "; at most " +
+           std::to_string(detail::kMaxVertices) + ")";
   for (size_t i = 0; i < n; ++i)
     if (!std::isfinite(in.points[2 * i]) || !std::isfinite(in.points[2 * i + 1]))
       return "vertex " + std::to_string(i) + " has a non-finite coordinate";
@@ -93,8 +97,10 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
 // a right or obtuse corner (dot-product signs).
 // Runs on the store (vertices in insertion order) rather than on the output, whose input
 // numbering scatters neighbours across memory.
-void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, Stats& stats) {
+// Also returns the largest triangle area (floating point, as refinement measures it).
+double measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, Stats& stats) {
   double cosSmallest = -1, cosLargest = 1;  // of the smallest and the largest angle seen
+  double largestArea = 0;
   uint32_t nonAcute = 0, obtuse = 0, count = 0;
   for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
     if (!inside[t]) continue;
@@ -112,6 +118,7 @@ void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, S
     }
     nonAcute += right;
     obtuse += blunt;
+    largestArea = std::max(largestArea, 0.5 * std::fabs(orient2d(p[0], p[1], p[2])));
     int lo = 0, hi = 0;
     for (int k = 1; k < 3; ++k) {
       if (len2[k] < len2[lo]) lo = k;
@@ -130,6 +137,7 @@ void measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, S
   stats.maxAngle = count ? degrees(cosLargest) : 0;
   stats.nonAcute = nonAcute;
   stats.obtuse = obtuse;
+  return largestArea;
 }
 
 // Smallest angle between two segments at a shared end (degrees), from the directions of the
@@ -178,7 +186,7 @@ void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats
 
 // Whether the refined mesh meets the target: exactly (dot-product signs) at 90 degrees, in
 // floating point for other angle bounds.
-void certify(const Options& options, Stats& stats, Result& result) {
+void certify(const Options& options, double largestArea, Stats& stats, Result& result) {
   bool met = true;
   if (options.mode == Mode::Acute) {
     met = stats.nonAcute == 0 && (options.maxAngle >= 90 || stats.maxAngle < options.maxAngle);
@@ -189,6 +197,8 @@ void certify(const Options& options, Stats& stats, Result& result) {
   }
   if (options.minAngle > 0 && stats.triangles > 0 && stats.minAngle < options.minAngle * (1 - 1e-9))
     met = false;
+  // An area bound counts too: a quality run stopped by its time limit has triangles above it.
+  if (options.maxArea > 0 && largestArea > options.maxArea) met = false;
   stats.targetMet = met;
   if (!met && result.status == Status::Ok) {
     result.status = Status::TargetNotMet;
@@ -205,23 +215,54 @@ void certify(const Options& options, Stats& stats, Result& result) {
 const char* version() { return "0.1.0"; }
 
 namespace detail {
-int rangeExponent(const Pslg& in) {
-  double largest = 0;
-  for (double x : in.points) largest = std::max(largest, std::fabs(x));
-  for (double x : in.holes) largest = std::max(largest, std::fabs(x));
-  if (!(largest > 0) || !std::isfinite(largest)) return 0;
-  int exponent;
-  std::frexp(largest, &exponent);
-  return exponent > 64 || exponent < -64 ? exponent : 0;
+void CoordinateRange::add(const std::vector<double>& xy) {
+  for (double x : xy) {
+    if (x == 0) continue;
+    if (!std::isfinite(x)) {
+      finite = false;
+      continue;
+    }
+    int e;
+    std::frexp(x, &e);
+    if (empty) largest = smallest = e, empty = false;
+    largest = std::max(largest, e);
+    smallest = std::min(smallest, e);
+  }
+}
+
+namespace {
+// Binary exponents the predicates handle exactly once scaled (see build.h): the largest
+// magnitude is left alone within 2^+-kNear, the smallest non-zero one must stay above
+// 2^kLowest, and a wide spread may push the largest up to 2^kNear.
+constexpr int kNear = 64, kLowest = -166;
+}  // namespace
+
+bool exactScale(const CoordinateRange& r, int& exponent) {
+  exponent = 0;
+  if (r.empty || !r.finite) return true;  // non-finite input is refused elsewhere
+  if (r.largest > kNear || r.largest < -kNear) exponent = r.largest;
+  if (r.smallest - exponent >= kLowest) return true;
+  // Tiny features next to large ones (1e-60 beside 1): lift the smallest as far as the
+  // largest allows.
+  exponent = r.largest - kNear;
+  return r.smallest - exponent >= kLowest;
+}
+
+std::string rangeMessage(const CoordinateRange& r) {
+  return "coordinates span too many orders of magnitude to be meshed exactly (the largest "
+         "about 2^" + std::to_string(r.largest) + ", the smallest non-zero about 2^" +
+         std::to_string(r.smallest) + "; at most 2^" + std::to_string(kNear - kLowest) +
+         " apart)";
 }
 
 bool scaleExactly(std::vector<double>& xy, int exponent) {
+  bool exact = true;
   for (double& x : xy) {
     double y = std::ldexp(x, exponent);
-    if (x != 0 && std::fabs(y) < std::numeric_limits<double>::min()) return false;
+    if (std::ldexp(y, -exponent) != x) exact = false;
     x = y;
   }
-  return true;
+  return exact;
 }
 }  // namespace detail
 
@@ -314,8 +355,8 @@ Result meshInRange(const Pslg& input, const Options& options) {
   stats.steiner = stats.vertices - n;
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
-  measureAngles(T, inside, stats);
-  if (refining) certify(target, stats, result);
+  double largestArea = measureAngles(T, inside, stats);
+  if (refining) certify(target, largestArea, stats, result);
   endPhase("output");
   stats.seconds = budget.elapsed();
   return result;
@@ -323,28 +364,75 @@ Result meshInRange(const Pslg& input, const Options& options) {
 
 }  // namespace
 
+namespace {
+
 // The predicates are exact while products of coordinate differences neither overflow nor
-// underflow. Inputs far from 1 in magnitude (1e300, 1e-300) are scaled by a power of two,
-// meshed, and scaled back: exact, since only exponents change.
-Result mesh(const Pslg& input, const Options& options) {
-  int exponent = input.points.size() % 2 ? 0 : detail::rangeExponent(input);
-  if (exponent == 0) return meshInRange(input, options);
-  Pslg scaled = input;
-  if (!detail::scaleExactly(scaled.points, -exponent) ||
-      !detail::scaleExactly(scaled.holes, -exponent)) {
+// underflow. Inputs far from 1 in magnitude (1e300, 1e-300), or with tiny features beside
+// large ones, are scaled by a power of two, meshed, and scaled back: exact, since only
+// exponents change. Inputs no power of two brings into range are refused.
+Result meshScaled(const Pslg& input, const Options& options) {
+  detail::CoordinateRange range;
+  range.add(input.points);
+  range.add(input.holes);
+  int exponent = 0;
+  if (input.points.size() % 2 == 0 && !detail::exactScale(range, exponent)) {
     Result r;
     r.status = Status::BadInput;
-    r.message = "coordinates span too many orders of magnitude (up to 2^" +
-                std::to_string(exponent) + " and down to below 2^" +
-                std::to_string(exponent - 1022) + ") to be meshed exactly";
+    r.message = detail::rangeMessage(range);
+    r.stats.inputVertices = uint32_t(input.vertexCount());
+    r.stats.inputSegments = uint32_t(input.segmentCount());
+    r.stats.inputHoles = uint32_t(input.holes.size() / 2);
     return r;
   }
+  if (exponent == 0) return meshInRange(input, options);
+  Pslg scaled = input;
+  detail::scaleExactly(scaled.points, -exponent);
+  detail::scaleExactly(scaled.holes, -exponent);
   Options scaledOptions = options;
-  scaledOptions.maxArea = std::ldexp(options.maxArea, -2 * exponent);
+  if (options.maxArea > 0 && std::isfinite(options.maxArea)) {
+    // An area bound beyond the double range once scaled bounds nothing; one below it is as
+    // small as can be asked for.
+    double area = std::ldexp(options.maxArea, -2 * exponent);
+    scaledOptions.maxArea = std::isinf(area) ? 0 : std::max(area, std::numeric_limits<double>::denorm_min());
+  }
   Result r = meshInRange(scaled, scaledOptions);
-  detail::scaleExactly(r.mesh.points, exponent);
+  // Steiner points below 2^-1022 once scaled back would lose bits (subnormal doubles), and
+  // the mesh could fold: refused rather than returned inexact.
+  if (!detail::scaleExactly(r.mesh.points, exponent)) {
+    Result bad;
+    bad.status = Status::BadInput;
+    bad.message = "the mesh needs points too close to zero to be represented exactly at this "
+                  "scale (below 2^-1022); scale the input up";
+    bad.stats = std::move(r.stats);
+    bad.stats.vertices = bad.stats.triangles = bad.stats.segments = bad.stats.steiner = 0;
+    return bad;
+  }
   return r;
 }
 
+}  // namespace
+
+// Nothing throws, as promised in acutemesh.h: memory running out (an area bound or a Steiner
+// budget far beyond what fits, a huge input) ends the call with a message instead. Builds
+// without exceptions (Emscripten's default) abort on it instead.
+Result mesh(const Pslg& input, const Options& options) {
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
+  try {
+    return meshScaled(input, options);
+  } catch (const std::bad_alloc&) {
+  } catch (const std::length_error&) {
+  }
+  Result r;
+  r.status = Status::BadInput;
+  r.message = "out of memory: the input, or the refinement asked for, needs more memory than "
+              "is available (a Steiner budget or a time limit bounds refinement)";
+  r.stats.inputVertices = uint32_t(input.vertexCount());
+  r.stats.inputSegments = uint32_t(input.segmentCount());
+  r.stats.inputHoles = uint32_t(input.holes.size() / 2);
+  return r;
+#else
+  return meshScaled(input, options);
+#endif
+}
 
 }  // namespace acutemesh

@@ -24,8 +24,9 @@ namespace {
 constexpr double kDegree = M_PI / 180.0;
 
 // kOnHull: on a boundary edge no segment lies on (hull of a point set); kept in place like
-// kOnSegment, reported like kFree (no input segment holds it).
-enum VertexRole : uint8_t { kInput, kOnSegment, kOnHull, kFree };
+// kOnSegment, reported like kFree (no input segment holds it). kArc: on the arc of a corner
+// fan (see buildCornerFans); never moved or removed.
+enum VertexRole : uint8_t { kInput, kOnSegment, kOnHull, kFree, kArc };
 
 struct Corner {
   int k = -1;         // corner index in its triangle, -1 if the triangle meets the target
@@ -46,13 +47,23 @@ void circumcenter(const double* a, const double* b, const double* c, double* out
   out[1] = a[1] + (bx * c2 - cx * b2) / d;
 }
 
+// How a run goes about the boundary. No one way wins everywhere (see refine()).
+struct Strategy {
+  bool cutAtFeetFirst = false;  // non-obtuse: cut slivers at altitude feet before the fans
+  bool footOnSegments = false;  // non-obtuse: split an encroached subsegment at the altitude foot
+  bool lazyFans = false;  // fans only at small sectors where a bad triangle turns up
+};
+
 class Refiner {
  public:
-  Refiner(Triangulation& T, const Pslg& input, const Options& options, const Budget& budget)
-      : T_(T), input_(input), options_(options), budget_(budget) {
+  Refiner(Triangulation& T, const Pslg& input, const Options& options, const Budget& budget,
+          const Strategy& strategy, uint32_t steinerCap)
+      : T_(T), input_(input), options_(options), budget_(budget), strategy_(strategy) {
     uint32_t inputCount = uint32_t(input.vertexCount());
     role_.assign(T.vertexCount(), kOnSegment);  // crossing points made by the CDT lie on segments
     std::fill(role_.begin(), role_.begin() + inputCount, kInput);
+    fanCenter_.assign(T.vertexCount(), kNone);
+    fanRadius_.assign(inputCount, 0);
     acute_ = options.mode == Mode::Acute;
     nonObtuse_ = options.mode == Mode::NonObtuse;
     cosMax_ = std::cos(options.maxAngle * kDegree);
@@ -69,12 +80,17 @@ class Refiner {
       cap += 4 * area / options.maxArea;
     }
     if (options.maxSteiner) cap = options.maxSteiner;
-    steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, 4.0e9));
+    if (steinerCap) cap = std::min(cap, double(steinerCap));
+    steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, double(kMaxVertices)));
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < input.points.size(); ++i)
       lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
     double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
-    minEdge2_ = std::pow(diagonal * std::ldexp(1.0, -24), 2);
+    // Far from the origin (an input moved by 1e15) the coordinates' own resolution is coarse:
+    // no edge shorter than 2^10 ulps of the largest coordinate, or split points round off
+    // their segments by a visible fraction of the edge.
+    double largest = std::max({-lo[0], -lo[1], hi[0], hi[1], 0.0});
+    minEdge2_ = std::pow(std::max(diagonal * std::ldexp(1.0, -24), largest * std::ldexp(1.0, -42)), 2);
     // Where the domain ends at an edge no segment lies on (point sets, --convex-hull), the
     // edge is a boundary all the same: fix it (with no segment) so the boundary rule applies.
     for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e)
@@ -83,9 +99,12 @@ class Refiner {
   }
 
   StepResult run();
+  bool anyBad() const;
+  StepResult runSteps();
   void markFree(std::vector<uint8_t>& out) const {
     out.resize(role_.size());
-    for (size_t v = 0; v < role_.size(); ++v) out[v] = role_[v] == kFree || role_[v] == kOnHull;
+    for (size_t v = 0; v < role_.size(); ++v)
+      out[v] = role_[v] == kFree || role_[v] == kOnHull || role_[v] == kArc;
   }
 
  private:
@@ -93,9 +112,28 @@ class Refiner {
   Corner worstCorner(uint32_t t) const;
   double shortestEdge2(uint32_t t) const;
   bool repair(uint32_t t, Corner c);
-  bool splitSubsegment(uint32_t e);
+  // Splits at `preferred` (a fraction of the way from the edge's first end) when given and
+  // well inside, else by the shell rule.
+  bool splitSubsegment(uint32_t e, double preferred = -1);
+  bool splitChord(uint32_t e);
+  void buildCornerFans();
+  double readStar(uint32_t v);
+  double sectorAngle(size_t i) const;
+  double fanRadius(uint32_t v, bool onlyWhereBad);
+  void buildFan(uint32_t v, double r);
+  struct Spoke {
+    uint32_t to;        // the other end of the fixed edge
+    double direction;   // radians
+    bool sectorInside;  // the sector from this spoke counter-clockwise to the next is in the domain
+    bool sectorBad;     // ... and holds a triangle that misses the target
+  };
+  std::vector<Spoke> spokes_;
+  void cutAtFeet();
+  void releaseChords();
   bool insertSteiner(uint32_t from, const double* x);
+  uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
   bool relocate(uint32_t a);
+  void legalizeStar(uint32_t a);
   bool slide(uint32_t a);
   bool moveTo(uint32_t a, double x, double y);
   // The line of input segment seg (or of p-q for a hull edge, seg == kNone). Points on a
@@ -111,26 +149,46 @@ class Refiner {
   };
   SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
   bool tryRemove(uint32_t v);
+  bool tryRemoveFromSegment(uint32_t v);
+  bool tryMerge(uint32_t u, uint32_t w);
+  bool holeMeetsTarget();
+  void undoMoves();
+  struct Moved {
+    uint32_t vertex;
+    double x, y;
+  };
+  std::vector<Moved> moved_;
   void removeSteinerPoints();
-  bool anyBad() const;
   StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
   void slicePoint(uint32_t t, double* x) const;
-  uint32_t addVertex(const double* p, VertexRole role) {
+  uint32_t addVertex(const double* p, VertexRole role, uint32_t fanCenter = kNone) {
     role_.push_back(role);
+    fanCenter_.push_back(fanCenter);
     return T_.addVertex(p[0], p[1]);
   }
   void dropLastVertex() {
     T_.pts.resize(T_.pts.size() - 2);
     T_.vertexEdge.pop_back();
     role_.pop_back();
+    fanCenter_.pop_back();
+  }
+  // A chord of a corner fan: a fixed edge between two points of the same fan.
+  bool isChord(uint32_t e) const {
+    uint32_t c = fanCenter_[T_.tri[e]];
+    return c != kNone && c == fanCenter_[T_.tri[next(e)]];
   }
 
   Triangulation& T_;
   const Pslg& input_;
   const Options& options_;
   const Budget& budget_;
+  const Strategy strategy_;
   std::vector<uint8_t> role_;
+  // Per vertex: the input vertex whose corner fan it belongs to (on its arc, or where the fan
+  // meets a segment), else kNone; per fan centre, the fan's radius.
+  std::vector<uint32_t> fanCenter_;
+  std::vector<double> fanRadius_;
   bool acute_ = false, nonObtuse_ = false;
   double cosMax_ = 0, cosMin_ = 1;
   bool strictMax_ = false;  // acute with a bound below 90 degrees, checked in floating point
@@ -139,7 +197,8 @@ class Refiner {
   // deeper (a narrow wedge it cannot fill) stops there and leaves the triangle to the
   // certificate, instead of spiralling into rounding noise.
   double minEdge2_ = 0;
-  std::vector<uint32_t> touched_, cavity_, ring_, hole_;
+  std::vector<uint32_t> touched_, cavity_, ring_, hole_, flips_;
+  std::vector<std::array<double, 2>> clipPoly_, clipNext_;  // relocate()'s scratch
 };
 
 // The corner that most misses the target, decided exactly where the target is 90 degrees.
@@ -175,15 +234,18 @@ Corner Refiner::worstCorner(uint32_t t) const {
 
 // Splits the subsegment of fixed half-edge e. Next to an input vertex the split lies at a
 // power of two from it (concentric shells); otherwise at the midpoint.
-bool Refiner::splitSubsegment(uint32_t e) {
+bool Refiner::splitSubsegment(uint32_t e, double preferred) {
+  if (isChord(e)) return splitChord(e);
   uint32_t a = T_.tri[e], b = T_.tri[next(e)];
-  const double *pa = P(a), *pb = P(b);
+  // Copies: adding a vertex may move the coordinate array.
+  const double pa[2] = {P(a)[0], P(a)[1]}, pb[2] = {P(b)[0], P(b)[1]};
   if (dist2(pa, pb) < 4 * minEdge2_) return false;
   double len = std::sqrt(dist2(pa, pb)), s = 0.5;
   if ((role_[a] == kInput) != (role_[b] == kInput)) {
     double shell = std::exp2(std::round(std::log2(len / 2)));
     s = role_[a] == kInput ? shell / len : 1 - shell / len;
   }
+  if (preferred > 0.01 && preferred < 0.99) s = preferred;
   uint32_t seg = T_.segment[e];
   SegmentLine line = segmentLine(seg, pa, pb);
   double ta = line.param(pa), tb = line.param(pb);
@@ -198,6 +260,171 @@ bool Refiner::splitSubsegment(uint32_t e) {
     dropLastVertex();
   }
   return false;
+}
+
+// Splits a chord of a corner fan on its arc: the fan gets one more isosceles triangle.
+bool Refiner::splitChord(uint32_t e) {
+  uint32_t a = T_.tri[e], b = T_.tri[next(e)], c = fanCenter_[a];
+  const double *pa = P(a), *pb = P(b), *pc = P(c);
+  if (dist2(pa, pb) < 4 * minEdge2_) return false;
+  double ra = std::sqrt(dist2(pa, pc)), rb = std::sqrt(dist2(pb, pc));
+  double ux = (pa[0] - pc[0]) / ra + (pb[0] - pc[0]) / rb, uy = (pa[1] - pc[1]) / ra + (pb[1] - pc[1]) / rb;
+  double scale = fanRadius_[c] / std::hypot(ux, uy);
+  double m[2] = {pc[0] + ux * scale, pc[1] + uy * scale};
+  if (!std::isfinite(m[0]) || !std::isfinite(m[1])) return false;
+  uint32_t v = addVertex(m, kArc, c);
+  if (T_.splitFixedEdge(e, v)) return true;
+  // The arc point lies beyond the triangle on the chord's outer side (a thin one). Insert it
+  // where it lies if no segment is in between, free the chord to flip towards it, and fix
+  // the chords that are there afterwards.
+  uint32_t outer = T_.tri[prev(e)] == c ? T_.opp[e] / 3 : e / 3, reached = kNone;
+  Location loc;
+  if (firstFixedCrossed(outer, m, reached) == kNone && reached != kNone && T_.inside[reached] &&
+      !T_.isGhost(reached))
+    loc = T_.locate(m, reached);
+  bool placed = (loc.where == Where::InTriangle ||
+                 (loc.where == Where::OnEdge && !T_.isFixed(loc.edge))) &&
+                T_.insertAt(v, loc) == v;
+  if (!placed) {
+    dropLastVertex();
+    return false;
+  }
+  if (uint32_t ab = T_.findEdge(a, b); ab != kNone) {
+    T_.unfixEdge(ab);
+    flips_.assign({ab, T_.opp[ab]});
+    T_.legalize(flips_);
+  }
+  for (auto [x, y] : {std::pair{a, v}, std::pair{v, b}, std::pair{a, b}}) {
+    uint32_t f = T_.findEdge(x, y);
+    if (f != kNone && !T_.isFixed(f)) T_.fixEdge(f, 0);
+  }
+  return true;
+}
+
+// Corner fans. Where segments meet at a small angle, refinement alone spirals into the
+// corner: points placed in or next to the wedge encroach the short subsegments at its apex,
+// and their splits make the triangles there smaller still. So an input vertex with a domain
+// sector under kSmallAngle between its segments gets a fan: every segment at it is split at
+// the same distance r, and every domain sector around it is cut by points on the circle of
+// radius r into isosceles triangles with apex angles of at most kFanAngle (acute). The fan's
+// outer edges (chords) are fixed while refinement runs, so the fan stays as built; the rest of
+// the domain meets no angle under 90 degrees there, and a chord that must be split is split on
+// its arc (one more spoke). r is 0.4 of the distance from the vertex to its link: the fan's
+// disk holds no other vertex or segment, its triangles are Delaunay, and the fans of two
+// vertices keep apart.
+namespace {
+constexpr double kSmallAngle = 60 * kDegree, kFanAngle = 80 * kDegree, kTwoPi = 2 * M_PI;
+constexpr double kFanFactor = 0.4;
+}  // namespace
+
+// The fixed edges at v in counter-clockwise order into spokes_ (empty if v has none), and
+// the distance from v to its link.
+double Refiner::readStar(uint32_t v) {
+  spokes_.clear();
+  double linkDistance = INFINITY;
+  const double* pv = P(v);
+  uint32_t e0 = T_.vertexEdge[v], e = e0;
+  bool badBeforeFirst = false;
+  do {
+    uint32_t t = e / 3;
+    bool inside = T_.inside[t] && !T_.isGhost(t);
+    if (T_.isFixed(e)) {
+      const double* pu = P(T_.tri[next(e)]);
+      spokes_.push_back({T_.tri[next(e)], std::atan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
+    }
+    bool bad = inside && worstCorner(t).k >= 0;
+    (spokes_.empty() ? badBeforeFirst : spokes_.back().sectorBad) |= bad;
+    if (!T_.isGhost(t)) {
+      const double *b = P(T_.tri[next(e)]), *c = P(T_.tri[prev(e)]);
+      double dx = c[0] - b[0], dy = c[1] - b[1];
+      double s = std::clamp(((pv[0] - b[0]) * dx + (pv[1] - b[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      double q[2] = {b[0] + s * dx, b[1] + s * dy};
+      linkDistance = std::min(linkDistance, std::sqrt(dist2(pv, q)));
+    }
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  if (!spokes_.empty()) spokes_.back().sectorBad |= badBeforeFirst;
+  return linkDistance;
+}
+
+double Refiner::sectorAngle(size_t i) const {
+  if (spokes_.size() == 1) return kTwoPi;
+  double a = spokes_[(i + 1) % spokes_.size()].direction - spokes_[i].direction;
+  return a <= 0 ? a + kTwoPi : a;
+}
+
+// The fan radius input vertex v calls for (0: no fan): it has a small domain sector, and with
+// onlyWhereBad one that holds a triangle missing the target.
+double Refiner::fanRadius(uint32_t v, bool onlyWhereBad) {
+  if (role_[v] != kInput || T_.vertexEdge[v] == kNone || fanRadius_[v] > 0) return 0;
+  double link = readStar(v);
+  bool small = false;
+  for (size_t i = 0; i < spokes_.size(); ++i)
+    small |= spokes_[i].sectorInside && sectorAngle(i) < kSmallAngle && (spokes_[i].sectorBad || !onlyWhereBad);
+  return small && std::isfinite(link) && link * link > 100 * minEdge2_ ? kFanFactor * link : 0;
+}
+
+void Refiner::buildFan(uint32_t v, double r) {
+  readStar(v);
+  fanRadius_[v] = r;
+  const double pv[2] = {P(v)[0], P(v)[1]};
+  const size_t n = spokes_.size();
+  // Split each fixed edge at v that bounds a domain sector at distance r.
+  std::vector<uint32_t> shell(n, kNone);
+  for (size_t i = 0; i < n; ++i) {
+    bool bounds = spokes_[i].sectorInside || spokes_[(i + n - 1) % n].sectorInside;
+    uint32_t e = T_.findEdge(v, spokes_[i].to);
+    if (!bounds || e == kNone) continue;
+    const double pu[2] = {P(spokes_[i].to)[0], P(spokes_[i].to)[1]};
+    SegmentLine line = segmentLine(T_.segment.empty() ? kNone : T_.segment[e], pv, pu);
+    double tv = line.param(pv), tu = line.param(pu);
+    double m[2];
+    line.at(tv + (tu - tv) * r / std::sqrt(dist2(pv, pu)), m);
+    uint32_t s = addVertex(m, T_.segment.empty() || T_.segment[e] == kNone ? kOnHull : kOnSegment, v);
+    if (T_.splitFixedEdge(e, s)) shell[i] = s;
+    else dropLastVertex();
+  }
+  // Points on the arc of each domain sector, then the chords between consecutive points.
+  std::vector<uint32_t>& ring = ring_;
+  for (size_t i = 0; i < n; ++i) {
+    size_t j = (i + 1) % n;
+    if (!spokes_[i].sectorInside || shell[i] == kNone || shell[j] == kNone) continue;
+    double angle = sectorAngle(i);
+    int pieces = int(std::ceil(angle / kFanAngle));
+    ring.assign(1, shell[i]);
+    for (int k = 1; k < pieces; ++k) {
+      double a = spokes_[i].direction + angle * k / pieces;
+      double x[2] = {pv[0] + r * std::cos(a), pv[1] + r * std::sin(a)};
+      uint32_t w = addVertex(x, kArc, v);
+      Location loc = T_.locate(x, T_.vertexEdge[v] / 3);
+      if (loc.where == Where::InTriangle && T_.inside[loc.tri] && T_.insertAt(w, loc) == w) {
+        ring.push_back(w);
+      } else {
+        dropLastVertex();
+      }
+    }
+    ring.push_back(shell[j]);
+    for (size_t k = 0; k + 1 < ring.size(); ++k) {
+      uint32_t e = T_.findEdge(ring[k], ring[k + 1]);
+      if (e != kNone && !T_.isFixed(e)) T_.fixEdge(e, 0);
+    }
+  }
+}
+
+// Fans before refinement: every radius first (from the triangulation as it is), then the fans.
+// With strategy_.lazyFans only where a small sector already holds a bad triangle; repair()
+// adds the others when a bad triangle turns up at such a corner.
+void Refiner::buildCornerFans() {
+  std::vector<std::pair<uint32_t, double>> centres;
+  for (uint32_t v = 0; v < fanRadius_.size(); ++v)
+    if (double r = fanRadius(v, strategy_.lazyFans)) centres.push_back({v, r});
+  for (auto [v, r] : centres) buildFan(v, r);
+}
+
+// Chords are fixed only while refinement runs; the output knows them as plain edges.
+void Refiner::releaseChords() {
+  for (uint32_t e = 0; e < 3 * T_.triangleSlots(); ++e)
+    if (!T_.isFree(e / 3) && T_.isFixed(e) && !T_.isGhost(e / 3) && isChord(e)) T_.unfixEdge(e);
 }
 
 // The point of slice(pq) farthest from all vertices, pq the shortest edge of t: the best of
@@ -275,7 +502,11 @@ bool Refiner::insertSteiner(uint32_t from, const double* x) {
   bool reachable = std::find(cavity_.begin(), cavity_.end(), loc.tri) != cavity_.end();
   if (!reachable || !T_.inside[loc.tri] || T_.isGhost(loc.tri)) {
     if (beyond != kNone) return splitSubsegment(beyond);
-    return false;
+    // Relocation leaves the triangulation not quite Delaunay in places, and the cavity can
+    // then miss x: the straight walk from `from` to x decides instead.
+    uint32_t reached = kNone, crossed = firstFixedCrossed(from, x, reached);
+    if (crossed != kNone) return splitSubsegment(crossed);
+    if (reached == kNone || !T_.inside[reached] || T_.isGhost(reached)) return false;
   }
   if (loc.where == Where::OnEdge && T_.isFixed(loc.edge)) return splitSubsegment(loc.edge);
   for (uint32_t k = 0; k < 3; ++k)
@@ -286,6 +517,51 @@ bool Refiner::insertSteiner(uint32_t from, const double* x) {
     return false;
   }
   return true;
+}
+
+// Walks the straight line from the centroid of t to x: the first fixed half-edge it crosses,
+// else kNone with the triangle holding x in `reached` (kNone too if the walk meets a vertex
+// or leaves the triangulation).
+uint32_t Refiner::firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const {
+  const uint32_t* v = &T_.tri[3 * t];
+  double g[2] = {(P(v[0])[0] + P(v[1])[0] + P(v[2])[0]) / 3, (P(v[0])[1] + P(v[1])[1] + P(v[2])[1]) / 3};
+  reached = kNone;
+  uint32_t entry = kNone;
+  for (uint32_t steps = 0; steps < 4 * T_.triangleSlots(); ++steps) {
+    uint32_t exit = kNone;
+    for (uint32_t e = 3 * t; e < 3 * t + 3 && exit == kNone; ++e) {
+      if (e == entry) continue;
+      const double *a = P(T_.tri[e]), *b = P(T_.tri[next(e)]);
+      if (orient2d(a, b, x) >= 0) continue;
+      double sa = orient2d(g, x, a), sb = orient2d(g, x, b);
+      if (sa == 0 || sb == 0) return kNone;
+      if ((sa < 0) != (sb < 0)) exit = e;
+    }
+    if (exit == kNone) {
+      reached = t;
+      return kNone;
+    }
+    if (T_.isFixed(exit)) return exit;
+    entry = T_.opp[exit];
+    t = entry / 3;
+    if (T_.isGhost(t)) return kNone;
+  }
+  return kNone;
+}
+
+// Restores the Delaunay property around vertex a after it moved: otherwise a triangle whose
+// circumcircle now holds a keeps standing, and later insertions (whose cavities assume
+// Delaunay) can miss it. Flips only touch edges next to triangles that miss the target: two
+// acute triangles always meet at a locally Delaunay edge.
+void Refiner::legalizeStar(uint32_t a) {
+  std::vector<uint32_t>& stack = flips_;
+  stack.clear();
+  uint32_t e0 = T_.vertexEdge[a], e = e0;
+  do {
+    for (uint32_t f = 3 * (e / 3); f < 3 * (e / 3) + 3; ++f) stack.push_back(f);
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  T_.legalize(stack);
 }
 
 // Every triangle around vertex a meets the target.
@@ -371,7 +647,9 @@ bool Refiner::relocate(uint32_t a) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (uint32_t v : ring)
     for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], P(v)[k]), hi[k] = std::max(hi[k], P(v)[k]);
-  std::vector<std::array<double, 2>> poly = {{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}}, next;
+  std::vector<std::array<double, 2>>& poly = clipPoly_;
+  std::vector<std::array<double, 2>>& next = clipNext_;
+  poly.assign({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
   auto clip = [&](double nx, double ny, double c) {  // keep n.p > c
     next.clear();
     for (size_t i = 0; i < poly.size(); ++i) {
@@ -406,6 +684,23 @@ bool Refiner::relocate(uint32_t a) {
 }
 
 bool Refiner::repair(uint32_t t, Corner c) {
+  // Moving vertices (relocation, the removal pass) can leave edges that are not locally
+  // Delaunay; a triangle standing on one is flipped away first, since the search for a new
+  // point below assumes empty circumcircles.
+  flips_.assign({3 * t, 3 * t + 1, 3 * t + 2});
+  size_t before = touched_.size();
+  T_.legalize(flips_);
+  if (touched_.size() > before) return true;
+  if (strategy_.lazyFans && (acute_ || nonObtuse_)) {
+    for (int k = 0; k < 3; ++k) {
+      uint32_t v = T_.tri[3 * t + k];
+      if (v >= fanRadius_.size()) continue;
+      if (double r = fanRadius(v, true)) {
+        buildFan(v, r);
+        return true;
+      }
+    }
+  }
   if (c.large) {
     // First try to repair the triangle by moving one of its Steiner points (seed 2.2).
     for (int k = 0; k < 3; ++k) {
@@ -417,11 +712,20 @@ bool Refiner::repair(uint32_t t, Corner c) {
           for (uint32_t f = 3 * (e / 3); f < 3 * (e / 3) + 3; ++f) touched_.push_back(T_.opp[f] / 3);
           e = T_.opp[prev(e)];
         } while (e != e0);
+        legalizeStar(a);
         return true;
       }
     }
     // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
     uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
+    if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) {
+      // Non-obtuse: the foot of the altitude from the obtuse corner cuts the triangle into two
+      // right triangles with one point.
+      const double *pc = P(T_.tri[3 * t + c.k]), *pa = P(T_.tri[opposite]), *pb = P(T_.tri[next(opposite)]);
+      double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
+      double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
+      return splitSubsegment(opposite, s);
+    }
     if (T_.isFixed(opposite)) return splitSubsegment(opposite);
     double x[2];
     slicePoint(t, x);
@@ -439,7 +743,36 @@ double Refiner::shortestEdge2(uint32_t t) const {
   return std::min({dist2(P(v[0]), P(v[1])), dist2(P(v[1]), P(v[2])), dist2(P(v[2]), P(v[0]))});
 }
 
+// Non-obtuse: a triangle obtuse opposite a subsegment is cut at the foot of its altitude into
+// two right triangles. Done before the corner fans, it settles most slivers between segments
+// with one point each, and the fans go only where that is not enough.
+void Refiner::cutAtFeet() {
+  for (int pass = 0; pass < 4; ++pass) {
+    bool changed = false;
+    for (uint32_t t = 0; t < T_.triangleSlots(); ++t) {
+      if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t)) continue;
+      Corner c = worstCorner(t);
+      uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
+      if (c.k < 0 || !c.large || !T_.isFixed(opposite)) continue;
+      const double *pc = P(T_.tri[3 * t + c.k]), *pa = P(T_.tri[opposite]), *pb = P(T_.tri[next(opposite)]);
+      double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
+      double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
+      changed |= splitSubsegment(opposite, s);
+      if (T_.vertexCount() >= steinerLimit_) return;
+    }
+    if (!changed) break;
+  }
+}
+
 StepResult Refiner::run() {
+  if (nonObtuse_ && strategy_.cutAtFeetFirst) cutAtFeet();
+  if (acute_ || nonObtuse_) buildCornerFans();
+  StepResult result = runSteps();
+  releaseChords();
+  return result;
+}
+
+StepResult Refiner::runSteps() {
   StepResult result;
   bool shortOfBound = false;
   if (strictMax_) {
@@ -516,10 +849,36 @@ StepResult Refiner::repairAll() {
   return {};
 }
 
-// Removes free vertex v if the triangles that then fill its star meet the target, or can be
-// made to by moving free vertices of theirs (relocation, as in repair). Otherwise everything
-// moved goes back and v is put back (the constrained Delaunay triangulation is unique, so its
-// star returns as it was).
+// After a removal: every triangle of the hole (hole_) meets the target, or is made to by
+// moving one of its vertices (relocation, or sliding along a segment). Moves are logged in
+// moved_ so that a failed removal can undo them.
+bool Refiner::holeMeetsTarget() {
+  moved_.clear();
+  for (uint32_t t : hole_) {
+    if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t) || worstCorner(t).k < 0) continue;
+    bool repaired = false;
+    for (uint32_t k = 0; k < 3 && !repaired; ++k) {
+      uint32_t a = T_.tri[3 * t + k];
+      Moved old{a, P(a)[0], P(a)[1]};
+      if (relocate(a) || slide(a)) moved_.push_back(old), repaired = true;
+    }
+    if (!repaired) return false;
+  }
+  return true;
+}
+
+void Refiner::undoMoves() {
+  for (size_t i = moved_.size(); i-- > 0;) {
+    T_.pts[2 * size_t(moved_[i].vertex)] = moved_[i].x;
+    T_.pts[2 * size_t(moved_[i].vertex) + 1] = moved_[i].y;
+  }
+  moved_.clear();
+}
+
+// Removes free vertex v if the triangles that then fill its star meet the target (see
+// holeMeetsTarget). Otherwise everything moved goes back and v is put back (the constrained
+// Delaunay triangulation is unique, so its star returns as it was up to cocircular ties,
+// which the final repair pass settles).
 bool Refiner::tryRemove(uint32_t v) {
   touched_.clear();
   T_.touched = &touched_;
@@ -527,31 +886,70 @@ bool Refiner::tryRemove(uint32_t v) {
   T_.touched = nullptr;
   if (!removed) return false;
   hole_ = touched_;
-  struct Moved {
-    uint32_t vertex;
-    double x, y;
-  };
-  std::vector<Moved> moved;
-  bool good = true;
-  for (uint32_t t : hole_) {
-    if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t) || worstCorner(t).k < 0) continue;
-    bool repaired = false;
-    for (uint32_t k = 0; k < 3 && !repaired; ++k) {
-      uint32_t a = T_.tri[3 * t + k];
-      Moved old{a, P(a)[0], P(a)[1]};
-      if (relocate(a) || slide(a)) moved.push_back(old), repaired = true;
-    }
-    if (!repaired) {
-      good = false;
-      break;
-    }
-  }
-  if (good) return true;
-  for (size_t i = moved.size(); i-- > 0;) {
-    T_.pts[2 * size_t(moved[i].vertex)] = moved[i].x;
-    T_.pts[2 * size_t(moved[i].vertex) + 1] = moved[i].y;
-  }
+  if (holeMeetsTarget()) return true;
+  undoMoves();
   T_.insert(v, hole_.back());  // the last triangle written is alive and next to v's place
+  return false;
+}
+
+// The same for a Steiner vertex on a segment: its two pieces become one again. If that fails,
+// v goes back onto the merged piece; should even that be impossible (the piece's triangles no
+// longer hold v's place), v stays out and the final repair pass mends what that spoilt.
+bool Refiner::tryRemoveFromSegment(uint32_t v) {
+  if (fanCenter_[v] != kNone || T_.vertexEdge[v] == kNone) return false;
+  uint32_t ends[2], count = 0, e0 = T_.vertexEdge[v], e = e0;
+  do {
+    if (T_.isFixed(e)) {
+      if (count == 2) return false;
+      ends[count++] = T_.tri[next(e)];
+    }
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  if (count != 2) return false;
+  touched_.clear();
+  T_.touched = &touched_;
+  bool removed = T_.removeFromSegment(v);
+  T_.touched = nullptr;
+  if (!removed) return false;
+  hole_ = touched_;
+  if (holeMeetsTarget()) return true;
+  undoMoves();
+  uint32_t merged = T_.findEdge(ends[0], ends[1]);
+  if (merged != kNone) T_.splitFixedEdge(merged, v);
+  return false;
+}
+
+// Replaces two neighbouring free vertices u, w by one at their midpoint if the triangles
+// around it meet the target (after moving vertices as holeMeetsTarget does). Otherwise the
+// pair goes back.
+bool Refiner::tryMerge(uint32_t u, uint32_t w) {
+  const double pu[2] = {P(u)[0], P(u)[1]}, pw[2] = {P(w)[0], P(w)[1]};
+  touched_.clear();
+  T_.touched = &touched_;
+  bool merged = false;
+  if (T_.removeVertex(u)) {
+    if (T_.removeVertex(w)) {
+      double mid[2] = {0.5 * (pu[0] + pw[0]), 0.5 * (pu[1] + pw[1])};
+      uint32_t m = addVertex(mid, kFree);
+      Location loc = T_.locate(mid, touched_.back());
+      if (loc.where == Where::InTriangle && T_.inside[loc.tri] && T_.insertAt(m, loc) == m) {
+        hole_ = touched_;
+        T_.touched = nullptr;
+        if (holeMeetsTarget()) return true;
+        undoMoves();
+        T_.touched = &touched_;
+        merged = T_.removeVertex(m);
+      }
+      if (!merged && T_.vertexEdge[m] != kNone) {
+        T_.touched = nullptr;
+        return false;  // m could not be taken out again: keep it (the final repair checks)
+      }
+      dropLastVertex();
+      T_.insert(w, touched_.back());
+    }
+    T_.insert(u, touched_.back());
+  }
+  T_.touched = nullptr;
   return false;
 }
 
@@ -565,25 +963,87 @@ bool Refiner::anyBad() const {
 
 void Refiner::removeSteinerPoints() {
   if (anyBad()) return;
-  for (int pass = 0; pass < 4; ++pass) {
+  for (int pass = 0; pass < 12; ++pass) {
     uint32_t removed = 0;
     for (uint32_t v = T_.vertexCount(); v-- > 0;) {
-      if (role_[v] != kFree || T_.vertexEdge[v] == kNone) continue;
+      if (T_.vertexEdge[v] == kNone) continue;
       if ((v & 63) == 0 && budget_.stop()) return;
-      removed += tryRemove(v);
+      if (role_[v] == kFree) removed += tryRemove(v);
+      else if (role_[v] == kOnSegment) removed += tryRemoveFromSegment(v);
     }
     if (removed == 0) break;
+  }
+  // Then pairs of neighbouring free vertices that one point can stand in for.
+  for (int pass = 0; pass < 2; ++pass) {
+    uint32_t merged = 0;
+    for (uint32_t u = T_.vertexCount(); u-- > 0;) {
+      if (role_[u] != kFree || T_.vertexEdge[u] == kNone) continue;
+      if ((u & 63) == 0 && budget_.stop()) return;
+      // The free neighbours first: a failed merge re-inserts u, which renumbers its edges.
+      std::vector<uint32_t>& partners = ring_;
+      partners.clear();
+      uint32_t e0 = T_.vertexEdge[u], e = e0;
+      do {
+        uint32_t w = T_.tri[next(e)];
+        if (w != kGhost && role_[w] == kFree) partners.push_back(w);
+        e = T_.opp[prev(e)];
+      } while (e != e0);
+      std::vector<uint32_t> list = partners;  // ring_ is reused by the repairs
+      for (uint32_t w : list) {
+        if (T_.vertexEdge[u] == kNone || T_.vertexEdge[w] == kNone || T_.findEdge(u, w) == kNone) continue;
+        if (tryMerge(u, w)) {
+          ++merged;
+          break;
+        }
+      }
+    }
+    if (merged == 0) break;
   }
 }
 
 }  // namespace
 
+// Acute and non-obtuse runs try a few boundary strategies on copies of the triangulation and
+// keep the result that meets the target with the fewest Steiner points: the corner fans
+// everywhere are the safe way (they settle every small angle), fans only where needed and
+// altitude feet (non-obtuse) often need far fewer points but now and then do not finish.
+// A later strategy stops as soon as it has used as many points as the best so far, so the
+// extra runs cost little where the first is already good.
 StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
                   const Budget& budget, std::vector<uint8_t>& freeVertex) {
-  Refiner refiner(T, input, options, budget);
-  StepResult result = refiner.run();
-  refiner.markFree(freeVertex);
-  return result;
+  std::vector<Strategy> strategies = {Strategy{}};
+  if (options.mode == Mode::NonObtuse) {
+    strategies.push_back({true, true, true});
+    strategies.push_back({false, true, false});
+  } else if (options.mode == Mode::Acute) {
+    strategies.push_back({false, false, true});
+  }
+  if (strategies.size() == 1) {
+    Refiner refiner(T, input, options, budget, strategies[0], 0);
+    StepResult result = refiner.run();
+    refiner.markFree(freeVertex);
+    return result;
+  }
+  const Triangulation start = T;
+  StepResult bestResult;
+  bool haveBest = false, bestMet = false;
+  for (const Strategy& strategy : strategies) {
+    Triangulation work = start;
+    uint32_t cap = bestMet ? T.vertexCount() - start.vertexCount() : 0;
+    if (bestMet && cap <= 1) break;
+    Refiner refiner(work, input, options, budget, strategy, bestMet ? cap - 1 : 0);
+    StepResult result = refiner.run();
+    bool met = result.ok() && !refiner.anyBad();
+    if (!haveBest || (met && (!bestMet || work.vertexCount() < T.vertexCount()))) {
+      T = std::move(work);
+      refiner.markFree(freeVertex);
+      bestResult = result;
+      haveBest = true;
+      bestMet = met;
+    }
+    if (result.status == Status::Cancelled || budget.stop()) break;
+  }
+  return bestResult;
 }
 
 }  // namespace acutemesh::detail

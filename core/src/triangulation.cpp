@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "triangulation.h"
 
 #include "acutemesh/predicates.h"
@@ -405,6 +406,85 @@ bool Triangulation::removeVertex(uint32_t v) {
     stack.push_back(3 * t + i);
   }
   vertexEdge[v] = kNone;
+  legalize(stack);
+  return true;
+}
+
+bool Triangulation::removeFromSegment(uint32_t v) {
+  uint32_t e0 = vertexEdge[v];
+  if (e0 == kNone) return false;
+  std::vector<uint32_t> ring;  // link vertices in counter-clockwise order around v
+  std::vector<size_t> fixedAt;
+  uint32_t e = e0;
+  do {
+    if (isGhost(e / 3)) return false;
+    if (fixed[e]) fixedAt.push_back(ring.size());
+    ring.push_back(tri[next(e)]);
+    e = opp[prev(e)];
+  } while (e != e0);
+  if (fixedAt.size() != 2) return false;
+  // Rotate the ring to start at a: a, left side..., b, right side...
+  std::rotate(ring.begin(), ring.begin() + long(fixedAt[0]), ring.end());
+  const uint32_t a = ring[0], b = ring[fixedAt[1] - fixedAt[0]];
+  std::vector<uint32_t> stack;
+  // Flip away the spokes to the link vertices strictly between a and b on each side, ears
+  // first as in removeVertex, until one link vertex is left per side. Spokes v-a and v-b,
+  // the segment's pieces, are never flipped.
+  while (true) {
+    size_t n = ring.size(), ib = std::find(ring.begin(), ring.end(), b) - ring.begin();
+    if (ib == 2 && n == 4) break;
+    size_t best = n;
+    for (size_t i = 1; i < n && best == n; ++i) {
+      if (i == ib) continue;
+      bool lone = i < ib ? ib == 2 : n - ib == 2;  // the only vertex left on its side
+      if (lone) continue;
+      uint32_t x = ring[i - 1], w = ring[i], y = ring[(i + 1) % n];
+      if (orient2d(point(y), point(v), point(x)) > 0 && orient2d(point(x), point(w), point(y)) > 0)
+        best = i;
+    }
+    if (best == n || ib < 2 || n - ib < 2) {
+      legalize(stack);
+      return false;  // v stays (its star flipped, still a valid triangulation)
+    }
+    uint32_t spoke = findEdge(v, ring[best]);
+    uint32_t t1 = opp[spoke] / 3;
+    flip(spoke);
+    stack.push_back(3 * t1);
+    stack.push_back(3 * t1 + 1);
+    stack.push_back(3 * t1 + 2);
+    ring.erase(ring.begin() + long(best));
+  }
+  const uint32_t left = ring[1], right = ring[3];
+  if (orient2d(point(a), point(left), point(b)) <= 0 || orient2d(point(b), point(right), point(a)) <= 0) {
+    legalize(stack);
+    return false;
+  }
+  // The four triangles (v,a,left), (v,left,b), (v,b,right), (v,right,a) become (a,left,b)
+  // and (b,right,a); the new edge a-b takes the attributes of the piece b->v.
+  uint32_t ea = findEdge(v, a), el = findEdge(v, left), eb = findEdge(v, b), er = findEdge(v, right);
+  EdgeAttr aLeft = attr(next(ea)), leftB = attr(next(el)), bRight = attr(next(eb)), rightA = attr(next(er));
+  EdgeAttr piece = attr(prev(el));  // b->v, in triangle (v, left, b)
+  uint8_t insideLeft = inside.empty() ? 0 : inside[el / 3];
+  uint8_t insideRight = inside.empty() ? 0 : inside[er / 3];
+  uint32_t t1 = ea / 3, t2 = eb / 3;
+  freeTriangle(el / 3);
+  freeTriangle(er / 3);
+  setCorners(t1, a, left, b);
+  setCorners(t2, b, right, a);
+  setAttr(3 * t1, aLeft);
+  setAttr(3 * t1 + 1, leftB);
+  setAttr(3 * t2, bRight);
+  setAttr(3 * t2 + 1, rightA);
+  link(3 * t1 + 2, 3 * t2 + 2);
+  fixed[3 * t1 + 2] = fixed[3 * t2 + 2] = 1;
+  if (trackSegments) {
+    wind[3 * t1 + 2] = piece.wind;
+    wind[3 * t2 + 2] = -piece.wind;
+    segment[3 * t1 + 2] = segment[3 * t2 + 2] = piece.segment;
+  }
+  if (!inside.empty()) inside[t1] = insideLeft, inside[t2] = insideRight;
+  vertexEdge[v] = kNone;
+  for (uint32_t f : {3 * t1, 3 * t1 + 1, 3 * t2, 3 * t2 + 1}) stack.push_back(f);
   legalize(stack);
   return true;
 }

@@ -19,6 +19,9 @@ namespace acutemesh::detail {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 constexpr uint32_t kGhost = 0xFFFFFFFEu;
+// Most vertices a triangulation may hold: about two triangles per vertex, three half-edges
+// each, all numbered by uint32 (kNone and kGhost reserved).
+constexpr uint32_t kMaxVertices = kNone / 6;
 
 inline uint32_t next(uint32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
 inline uint32_t prev(uint32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
@@ -101,6 +104,12 @@ class Triangulation {
   // flips its degree down to 3, merges the last three triangles and restores Delaunay.
   // Returns false (and changes nothing) if the vertex is not removable.
   bool removeVertex(uint32_t v);
+
+  // Removes a vertex v whose only fixed edges are the two pieces a-v, v-b of one segment (no
+  // ghost triangle in its star): the pieces become one fixed edge a-b with their attributes,
+  // and each side keeps its `inside` flag. Returns false if the link does not allow it; v
+  // then stays, its star possibly re-flipped (still a valid triangulation).
+  bool removeFromSegment(uint32_t v);
 
   // The half-edge leaving a with its other end at b, or kNone.
   uint32_t findEdge(uint32_t a, uint32_t b) const;

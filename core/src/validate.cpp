@@ -871,9 +871,12 @@ class Validator {
     if (hullOk) {
       // The hull of the input vertices: refinement splits hull edges at rounded points, so
       // the mesh's own hull may differ from it by rounding.
-      std::vector<uint8_t> usedInput = used_;
-      std::fill(usedInput.begin() + nIn_, usedInput.end(), 0);
-      hull = convexHull(m_.points, usedInput);
+      // Only input vertices count: a split point rounded outward would otherwise join the
+      // hull and push an input vertex of a nearly straight hull stretch off it
+      // (one-ulp-apart.node, nonobtuse).
+      std::vector<uint8_t> usedInput(used_.begin(), used_.begin() + nIn_);
+      std::vector<double> inputPoints(m_.points.begin(), m_.points.begin() + 2 * size_t(nIn_));
+      hull = convexHull(inputPoints, usedInput);
       hullNext.assign(n_, kNone);
       for (size_t i = 0; i < hull.size(); ++i) hullNext[hull[i]] = hull[(i + 1) % hull.size()];
     }
@@ -1051,9 +1054,19 @@ class Validator {
 
 Validation validate(const Pslg& input, const Mesh& mesh, const Options& options) {
   Validation result;
-  // Far from 1 (1e300, 1e-300) the predicates would overflow or underflow: check an exactly
-  // scaled copy, as mesh() meshes one.
-  int exponent = input.points.size() % 2 ? 0 : detail::rangeExponent(input);
+  // Far from 1 (1e300, 1e-300), or with tiny coordinates beside large ones, the predicates
+  // would overflow or underflow: check an exactly scaled copy, as mesh() meshes one (scaled
+  // for the input, as there; the mesh's own points go along). Input mesh() refuses cannot be
+  // checked either.
+  detail::CoordinateRange range;
+  range.add(input.points);
+  range.add(input.holes);
+  int exponent = 0;
+  if (!detail::exactScale(range, exponent)) {
+    result.ok = false;
+    result.errors.push_back("cannot check exactly: input " + detail::rangeMessage(range));
+    return result;
+  }
   if (exponent != 0) {
     Pslg in = input;
     Mesh m = mesh;

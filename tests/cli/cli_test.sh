@@ -124,6 +124,53 @@ check "help text" stdout_has "usage: acutemesh"
 check "version" run 0 --version
 check "version text" stdout_has "acutemesh 0."
 
+# --- hostile input (tests/data/bad): exit 2 and exactly one line on stderr, naming the item ---
+bad=$data/bad
+# one_error FILE WANT: exit 2, stderr is one "acutemesh: error: ..." line containing WANT,
+# made of printable ASCII only (no terminal escapes or raw bytes from the input).
+one_error() {
+  run 2 --no-output "$bad/$1" || return 1
+  local lines
+  lines=$(wc -l <"$work/err")
+  [[ $lines -eq 1 ]] || { echo "  $1: $lines lines on stderr: $(cat -A "$work/err")"; return 1; }
+  grep -q '^acutemesh: error: ' "$work/err" || { echo "  $1: not an error line"; return 1; }
+  LC_ALL=C grep -q '[^ -~]' "$work/err" && { echo "  $1: non-printable bytes"; return 1; }
+  stderr_has "$2"
+}
+check "bad: empty" one_error empty.poly "empty.poly:1: expected the header"
+check "bad: truncated" one_error truncated-vertex-list.poly "truncated-vertex-list.poly:1: expected a vertex count the rest of the text can hold"
+check "bad: nan" one_error nan-coordinate.poly "nan-coordinate.poly:3: expected a finite x coordinate, found 'nan'"
+check "bad: count beyond file" one_error vertex-count-far-larger-than-file.node "found 4000000000"
+check "bad: index" one_error segment-index-out-of-range.json "segment-index-out-of-range.json:1: expected a vertex index in \"segments\" below 3, found 3"
+check "bad: random bytes" one_error random-bytes.poly 'random-bytes.poly:1: expected the number of vertices'
+check "bad: terminal escape" one_error escape-in-message.node "found '\x1B[31mred"
+check "bad: deep nesting" one_error deep-nesting.json "nesting at most 200 deep"
+check "bad: collinear" one_error all-points-collinear.node "all-points-collinear.node: all 10 input vertices are collinear"
+check "bad: one point" one_error one-point.node "input has 1 vertex"
+check "bad: span" one_error tiny-features-beside-unit.node "orders of magnitude"
+check "bad: empty JSON" one_error empty.json "empty.json:1: expected '{'"
+# Meshed, not refused: crossings, holes eating everything, extreme scales.
+check "bad: bow-tie meshes" run 0 --stats --no-output "$bad/bow-tie.poly"
+check "bad: star burst meshes" run 0 --stats --no-output "$bad/star-burst-crossings.poly"
+check "bad: star burst crossings" stderr_has "segment crossings split at new vertices"
+check "bad: 1e300 acute" run 0 --mode acute --stats --no-output "$bad/enormous-scale-1e300.poly"
+check "bad: 1e300 certified" stdout_has '"certified": true'
+check "bad: hole eats all" run 0 --stats --no-output "$bad/hole-eats-everything.poly"
+check "bad: hole eats all, 0 triangles" stdout_has '"triangles": 0'
+check "bad: hole eats all warns" stderr_has "the domain is empty"
+
+# --- limits: a tiny time limit on a big job ends soon, exit 1, with the best mesh written ---
+awk 'BEGIN { srand(7); n = 50000; print n, 2, 0, 0;
+             for (i = 0; i < n; i++) printf "%d %.17g %.17g\n", i, rand(), rand() }' >"$work/big.node"
+start=$(date +%s%N)
+check "time limit: exit 1" run 1 --mode quality --max-area 1e-10 --time-limit 1 --stats -o "$work/bigout" "$work/big.node"
+elapsed_ms=$((($(date +%s%N) - start) / 1000000))
+check "time limit: returns within 10 s (took $elapsed_ms ms)" test "$elapsed_ms" -lt 10000
+check "time limit: message" stderr_has "time limit reached"
+check "time limit: stats say so" stdout_has '"targetMet": false'
+check "time limit: mesh written" test -s "$work/bigout.ele"
+check "time limit: mesh reads back" run 0 --no-output --mode delaunay "$work/bigout.node"
+
 # --- CG:SHOP 2025 solution: BASE.solution.json, only for CG:SHOP instance input --------------
 cp "$shared/cgshop2025/ortho_10_d2723dcc.instance.json" "$work/ortho.instance.json"
 check "cgshop solution" run 0 --format cgshop -o "$work/ortho" "$work/ortho.instance.json"

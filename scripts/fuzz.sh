@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (tests/fuzz) with clang, ASan and UBSan into build-fuzz/ and
+# runs each for a bounded time; fails on any crash, leak, sanitizer report or failed check.
+#
+#   bash scripts/fuzz.sh                       about 60 s in all (FUZZ_SECONDS=60)
+#   FUZZ_SECONDS=3600 bash scripts/fuzz.sh     an hour, split between the harnesses
+#   FUZZ_ONLY=fuzz_mesh bash scripts/fuzz.sh   one harness
+#
+# Each harness starts from its seed corpus in tests/fuzz/corpus/<harness>/ (in the repo) plus
+# what earlier runs found (build-fuzz/corpus/<harness>/, kept between runs). A finding is
+# saved as build-fuzz/artifacts/<harness>-crash-*: reproduce it with
+#   build-fuzz/<harness> build-fuzz/artifacts/<harness>-crash-...
+# then fix the bug and copy the input into tests/fuzz/corpus/<harness>/ (or tests/data/bad).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+total=${FUZZ_SECONDS:-60}
+harnesses=(${FUZZ_ONLY:-fuzz_triangle fuzz_json fuzz_mesh})
+jobs=${FUZZ_JOBS:-2}
+
+if ! command -v clang++ >/dev/null 2>&1; then
+  echo "fuzz: clang++ is missing (bash scripts/setup.sh installs it)" >&2
+  exit 1
+fi
+flags="-g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all"
+if [[ ! -f build-fuzz/CMakeCache.txt ]]; then
+  cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_CXX_FLAGS="$flags" -DACUTEMESH_FUZZ=ON -DACUTEMESH_TESTS=OFF -DACUTEMESH_CLI=OFF \
+    -DACUTEMESH_INSTALL=OFF >/dev/null
+fi
+cmake --build build-fuzz -j"$jobs" --target "${harnesses[@]}" >/dev/null
+
+each=$(( total / ${#harnesses[@]} ))
+((each >= 1)) || each=1
+mkdir -p build-fuzz/artifacts
+status=0
+for h in "${harnesses[@]}"; do
+  mkdir -p "build-fuzz/corpus/$h"
+  log="build-fuzz/$h.log"
+  # New inputs go to the first corpus directory (build-fuzz), never into the repo's seeds.
+  if ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
+     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+     "build-fuzz/$h" -max_total_time="$each" -timeout=20 -rss_limit_mb=2048 -max_len=4096 \
+       -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$h-" \
+       "build-fuzz/corpus/$h" "tests/fuzz/corpus/$h" >"$log" 2>&1; then
+    execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
+    cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo '?')
+    echo "fuzz: $h: ${each} s, $execs runs, coverage $cov, no finding"
+  else
+    status=1
+    echo "fuzz: $h: FINDING (log: $log)" >&2
+    grep -E 'ERROR|fuzz finding|SUMMARY|Test unit written' "$log" | head -n 10 >&2 || tail -n 30 "$log" >&2
+  fi
+done
+exit $status
