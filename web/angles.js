@@ -20,11 +20,11 @@ const RIGHT = CLASSES.findIndex((c) => c.right);
 
 const DEG = 180 / Math.PI;
 
-// Returns { angles: Float32Array(3T) in degrees, cls: Uint8Array(T) class index per triangle,
+// Returns { angles: Float64Array(3T) in degrees (single precision would turn 89.99999 into 90), cls: Uint8Array(T) class index per triangle,
 // counts per class }.
 export function analyse(points, triangles) {
   const T = triangles.length / 3;
-  const angles = new Float32Array(3 * T);
+  const angles = new Float64Array(3 * T);
   const cls = new Uint8Array(T);
   const counts = new Array(CLASSES.length).fill(0);
   for (let t = 0; t < T; t++) {

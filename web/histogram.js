@@ -10,7 +10,8 @@ export function binAngles(angles) {
   let max = 0;
   for (let i = 0; i < angles.length; i++) {
     const a = angles[i];
-    bins[Math.min(bins.length - 1, Math.floor(a / BIN))]++;
+    // The last bin below 90 is closed: a right angle (non-obtuse meshes) counts with 88-90.
+    bins[a === 90 ? 90 / BIN - 1 : Math.min(bins.length - 1, Math.floor(a / BIN))]++;
     if (a > max) max = a;
   }
   return { bins, max };
