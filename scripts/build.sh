@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Release build of the library, the CLI and the C++ tests into build/.
+# Release build of the library, the CLI and the C++ tests into build/, and the web page's
+# vendored modules into web/vendor/.
 # Configures only when build/CMakeCache.txt is missing, or when an earlier configure failed
 # before writing the build files (cmake re-runs itself when a CMakeLists.txt changes); extra
 # arguments go to that configure, e.g.
@@ -15,3 +16,6 @@ if [[ ! -f build/CMakeCache.txt || ! ( -f build/Makefile || -f build/build.ninja
   cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release "$@"
 fi
 cmake --build build -j"$(nproc)"
+
+# The web page's third-party ES modules (opentype.js, topojson-client) into web/vendor/.
+node scripts/build-web.mjs

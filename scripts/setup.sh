@@ -18,6 +18,7 @@ REQUIREMENTS=(
   "g++:g++"
   "make|ninja:make"
   "/usr/include/gtest/gtest.h:libgtest-dev"
+  "chromium:chromium"
 )
 # ---------------------------------------------------------------------------------------------
 

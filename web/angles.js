@@ -20,9 +20,13 @@ const RIGHT = CLASSES.findIndex((c) => c.right);
 
 const DEG = 180 / Math.PI;
 
-// Returns { angles: Float64Array(3T) in degrees (single precision would turn 89.99999 into 90), cls: Uint8Array(T) class index per triangle,
-// counts per class }.
-export function analyse(points, triangles) {
+// Returns { angles: Float64Array(3T) in degrees (single precision would turn 89.99999 into 90),
+// cls: Uint8Array(T) class index per triangle, counts per class }.
+// `bound` is the mesher's exact verdict, when it certified one: 'acute' (every corner's dot
+// product > 0) or 'nonobtuse' (>= 0). Floating point can put a corner a hair on the wrong side
+// of 90; with a bound, such angles are clamped to it.
+const BELOW_90 = 90 - 1e-9;
+export function analyse(points, triangles, bound = null) {
   const T = triangles.length / 3;
   const angles = new Float64Array(3 * T);
   const cls = new Uint8Array(T);
@@ -35,10 +39,14 @@ export function analyse(points, triangles) {
     // The cross product is the same (twice the area) at every corner.
     const cross = Math.abs(abx * cay - aby * cax);
     const da = -(abx * cax + aby * cay), db = -(bcx * abx + bcy * aby), dc = -(cax * bcx + cay * bcy);
-    const A = Math.atan2(cross, da) * DEG, B = Math.atan2(cross, db) * DEG, C = Math.atan2(cross, dc) * DEG;
+    let A = Math.atan2(cross, da) * DEG, B = Math.atan2(cross, db) * DEG, C = Math.atan2(cross, dc) * DEG;
+    if (bound) {
+      const cap = bound === 'acute' ? BELOW_90 : 90;
+      A = Math.min(A, cap); B = Math.min(B, cap); C = Math.min(C, cap);
+    }
     angles[3 * t] = A; angles[3 * t + 1] = B; angles[3 * t + 2] = C;
     let k;
-    if (da === 0 || db === 0 || dc === 0) k = RIGHT;
+    if (bound !== 'acute' && (da === 0 || db === 0 || dc === 0 || (bound === 'nonobtuse' && Math.max(A, B, C) === 90))) k = RIGHT;
     else {
       const m = Math.max(A, B, C);
       k = 0;

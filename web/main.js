@@ -163,6 +163,7 @@ function meshOptions() {
   if (o.mode === 'acute') o.maxAngle = num(ui.maxAngle) || 90;
   if (o.mode !== 'cdt') {
     if (num(ui.minAngle) > 0) o.minAngle = num(ui.minAngle);
+    else if (o.mode === 'quality') o.minAngle = 20;  // the CLI's default: quality needs a bound
     if (num(ui.maxArea) > 0) o.maxArea = num(ui.maxArea);
     if (num(ui.maxSteiner) > 0) o.maxSteiner = Math.round(num(ui.maxSteiner));
   }
@@ -194,9 +195,13 @@ async function run() {
     const options = meshOptions();
     const m = await meshInWorker(pslg, options, {
       signal: controller.signal,
+      // Refinement rarely knows its end (fraction -1): then the bar stays indeterminate and
+      // the growing vertex count shows that work goes on.
       onProgress: (p) => {
-        const f = typeof p === 'number' ? p : p && (p.fraction ?? p.progress);
-        if (Number.isFinite(f)) ui.progress.value = Math.max(0, Math.min(1, f));
+        if (running !== controller || !p) return;
+        if (p.fraction >= 0) ui.progress.value = Math.min(1, p.fraction);
+        else ui.progress.removeAttribute('value');
+        setStatus(`Meshing… ${p.phase}${p.vertices ? `, ${p.vertices.toLocaleString('en')} vertices` : ''}`);
       },
     });
     if (running !== controller) return;  // a newer run took over
@@ -216,14 +221,17 @@ async function run() {
 
 function show(am, pslg, input, options, m, wallMs) {
   const nInput = pslg.points.length / 2;
-  const a = analyse(m.points, m.triangles);
+  const s = m.stats || {};
+  // Colours and bars follow the exact verdict: a certified acute mesh's corners at 89.9999
+  // degrees may compute as 90 in floating point, and must not be painted as right or obtuse.
+  const bound = s.certified ? (options.mode === 'acute' ? 'acute' : options.mode === 'nonobtuse' ? 'nonobtuse' : null) : null;
+  const a = analyse(m.points, m.triangles, bound);
   view.setMesh(m, a.cls, nInput);
   draw.hide();
   if (input.key !== lastMeshedKey) view.fit();
   lastMeshedKey = input.key;
   lastResult = { am, mesh: m, label: input.label, angles: a.angles };
   drawHistogram(ui.histogram, a.angles);
-  const s = m.stats || {};
   const result = {
     triangles: m.triangles.length / 3,
     vertices: s.vertices ?? m.points.length / 2,
@@ -276,7 +284,8 @@ function renderStats(r) {
     ['Steiner', r.steiner.toLocaleString('en')],
     ['Input', r.inputVertices.toLocaleString('en')],
     ['Min angle', r.minAngle == null ? '–' : `${truncate(r.minAngle, 2)}°`],
-    ['Max angle', r.maxAngle == null ? '–' : `${truncate(r.maxAngle, 4)}°`],
+    ['Max angle', r.maxAngle == null ? '–' : r.certified && r.mode === 'acute' && r.maxAngle >= 89.99995
+      ? '< 90° exactly' : `${truncate(r.maxAngle, 4)}°`],
     ['Certified', r.certified ? 'yes' : 'no'],
     ['Time', `${r.milliseconds} ms`],
   ];

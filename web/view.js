@@ -1,9 +1,9 @@
 // The canvas view: a mesh (triangles coloured by their largest angle, edges, input segments,
 // Steiner points) or an input preview, with pan and zoom by wheel, drag, pinch and keys.
 //
-// Geometry is turned into a few Path2D objects once per mesh (one per colour class, one for
-// all edges, one for the input segments) in world coordinates; a frame is then a handful of
-// fill/stroke calls under a transform, whatever the triangle count. When a full frame is slow
+// Geometry is turned into Path2D objects once per mesh, in world coordinates, grouped in tiles
+// of a few thousand triangles (per tile one path per colour class and one of its edges); a
+// frame is then a few fill/stroke calls per visible tile under one transform. When a full frame is slow
 // (hundreds of thousands of triangles on a software rasteriser), frames during a gesture
 // redraw the last full frame as a bitmap, scaled and shifted, and the full frame follows when
 // the gesture pauses: panning stays smooth and the picture is sharp again at rest.
@@ -22,7 +22,7 @@ export class MeshView {
     this.dpr = 1;
     this.w = 1; this.h = 1;
     this.s = 1; this.tx = 0; this.ty = 0;
-    this.mesh = null;       // { points, triangles, nInput, paths, edges, segments, meanEdge }
+    this.mesh = null;       // { points, triangles, nInput, tiles, segments, meanEdge }
     this.preview = null;    // { path, fill, segments, points }
     this.showEdges = true;
     this.showSteiner = true;
@@ -44,21 +44,15 @@ export class MeshView {
 
   // ---- content ------------------------------------------------------------------------
   setMesh(m, cls, nInput) {
-    const paths = CLASSES.map(() => new Path2D());
     const { points: p, triangles: t } = m;
-    for (let i = 0; i < t.length; i += 3) {
-      const a = 2 * t[i], b = 2 * t[i + 1], c = 2 * t[i + 2];
-      const path = paths[cls[i / 3]];
-      path.moveTo(p[a], p[a + 1]);
-      path.lineTo(p[b], p[b + 1]);
-      path.lineTo(p[c], p[c + 1]);
-      path.closePath();
-    }
-    const { path: edges, mean } = edgePath(p, t);
-    this.mesh = { points: p, triangles: t, nInput, paths, edges, meanEdge: mean,
+    const tiles = buildTiles(p, t, cls);
+    let sum = 0, count = 0;
+    for (const tile of tiles) { sum += tile.edgeSum; count += tile.edgeCount; }
+    this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge: count ? sum / count : 0,
       segments: segmentPath(p, m.segments) };
     this.preview = null;
     this.bounds = boundsOf(p, t);
+    this.cacheXform = null;
     this.requestRender();
   }
 
@@ -129,6 +123,9 @@ export class MeshView {
     if (fast) this.#renderCached();
     else {
       this.#renderFull();
+      // Canvas drawing is recorded and rasterised later, off this measurement; reading one
+      // pixel forces the raster now, so the time below is what the frame really costs.
+      this.ctx.getImageData(0, 0, 1, 1);
       this.lastFullMs = performance.now() - t0;
       this.canvas.dataset.renderMs = this.lastFullMs.toFixed(1);
       if (this.lastFullMs > SLOW_FRAME_MS) this.#storeCache();
@@ -151,14 +148,22 @@ export class MeshView {
     ctx.lineJoin = 'round';
     if (this.mesh) {
       const m = this.mesh;
-      m.paths.forEach((path, k) => { ctx.fillStyle = CLASSES[k].color; ctx.fill(path); });
+      // Only tiles that meet the window: zoomed in, most of a big mesh costs nothing.
+      const [wx0, wy1] = this.toWorld(0, 0), [wx1, wy0] = this.toWorld(this.w, this.h);
+      const visible = m.tiles.filter((b) => b.x1 >= wx0 && b.x0 <= wx1 && b.y1 >= wy0 && b.y0 <= wy1);
+      CLASSES.forEach((c, k) => {
+        ctx.fillStyle = c.color;
+        for (const tile of visible) if (tile.paths[k]) ctx.fill(tile.paths[k]);
+      });
       const edgePx = m.meanEdge * s;
       if (this.showEdges && edgePx > 1.5) {
-        // Fade edges in as triangles grow on screen, so a dense mesh stays readable.
+        // Fade edges in as triangles grow on screen, so a dense mesh stays readable. The
+        // colour is opaque (a blend toward the ink): translucent strokes of a huge path make
+        // the rasteriser composite the whole path as a layer, many times slower.
         const alpha = Math.min(0.55, 0.12 + (edgePx - 1.5) * 0.05);
-        ctx.strokeStyle = `rgba(20,24,32,${alpha.toFixed(3)})`;
+        ctx.strokeStyle = mix(alpha);
         ctx.lineWidth = 0.7 * px;
-        ctx.stroke(m.edges);
+        for (const tile of visible) ctx.stroke(tile.edges);
       }
       ctx.strokeStyle = SEGMENT_COLOR;
       ctx.lineWidth = 1.6 * px;
@@ -363,33 +368,58 @@ function boundsOf(points, triangles) {
   return { x0, y0, x1, y1 };
 }
 
-// Every mesh edge once: an edge a-b appears as half-edge a->b and, if interior, b->a. Take
-// a->b with a < b, plus b->a with no twin (boundary edges walked the other way).
-function edgePath(p, t) {
-  const path = new Path2D();
+// A neutral grey between the triangle colours and the ink, opaque.
+function mix(alpha) {
+  const v = Math.round(255 * (1 - alpha) * 0.55 + 24 * alpha);
+  return `rgb(${v},${v + 2},${v + 6})`;
+}
+
+// Triangles bucketed by centroid into a grid of tiles of about TILE_TRIANGLES each; per tile,
+// one Path2D per colour class, one of its edges, and its bounds (for culling). Every mesh edge
+// is drawn once: half-edge a->b when a < b, and b->a when it has no twin (a boundary edge
+// walked the other way); it goes to the tile of the triangle that holds it.
+const TILE_TRIANGLES = 4000;
+
+function buildTiles(p, t, cls) {
+  const T = t.length / 3;
+  const b = boundsOf(p, t);
+  const g = Math.max(1, Math.round(Math.sqrt(T / TILE_TRIANGLES)));
+  const w = (b.x1 - b.x0) / g || 1, h = (b.y1 - b.y0) / g || 1;
+  const tiles = Array.from({ length: g * g }, () => ({
+    paths: [], edges: new Path2D(), x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity, edgeSum: 0, edgeCount: 0,
+  }));
   const n = p.length / 2;
   const forward = new Set();
   for (let i = 0; i < t.length; i += 3) {
     for (let k = 0; k < 3; k++) {
-      const a = t[i + k], b = t[i + (k + 1) % 3];
-      if (a < b) forward.add(a * n + b);
+      const a = t[i + k], c = t[i + (k + 1) % 3];
+      if (a < c) forward.add(a * n + c);
     }
   }
-  let sum = 0, count = 0;
-  const add = (a, b) => {
-    path.moveTo(p[2 * a], p[2 * a + 1]);
-    path.lineTo(p[2 * b], p[2 * b + 1]);
-    sum += Math.hypot(p[2 * a] - p[2 * b], p[2 * a + 1] - p[2 * b + 1]);
-    count++;
-  };
-  for (let i = 0; i < t.length; i += 3) {
+  for (let i = 0; i < T; i++) {
+    const a = 2 * t[3 * i], bb = 2 * t[3 * i + 1], c = 2 * t[3 * i + 2];
+    const cx = (p[a] + p[bb] + p[c]) / 3, cy = (p[a + 1] + p[bb + 1] + p[c + 1]) / 3;
+    const col = Math.min(g - 1, Math.floor((cx - b.x0) / w)), row = Math.min(g - 1, Math.floor((cy - b.y0) / h));
+    const tile = tiles[row * g + col];
+    const path = tile.paths[cls[i]] || (tile.paths[cls[i]] = new Path2D());
+    path.moveTo(p[a], p[a + 1]);
+    path.lineTo(p[bb], p[bb + 1]);
+    path.lineTo(p[c], p[c + 1]);
+    path.closePath();
+    for (const v of [a, bb, c]) {
+      tile.x0 = Math.min(tile.x0, p[v]); tile.x1 = Math.max(tile.x1, p[v]);
+      tile.y0 = Math.min(tile.y0, p[v + 1]); tile.y1 = Math.max(tile.y1, p[v + 1]);
+    }
     for (let k = 0; k < 3; k++) {
-      const a = t[i + k], b = t[i + (k + 1) % 3];
-      if (a < b) add(a, b);
-      else if (!forward.has(b * n + a)) add(b, a);
+      const u = t[3 * i + k], v = t[3 * i + (k + 1) % 3];
+      if (u > v && forward.has(v * n + u)) continue;  // drawn from its twin
+      tile.edges.moveTo(p[2 * u], p[2 * u + 1]);
+      tile.edges.lineTo(p[2 * v], p[2 * v + 1]);
+      tile.edgeSum += Math.hypot(p[2 * u] - p[2 * v], p[2 * u + 1] - p[2 * v + 1]);
+      tile.edgeCount++;
     }
   }
-  return { path, mean: count ? sum / count : 0 };
+  return tiles.filter((tile) => tile.x1 >= tile.x0);
 }
 
 function segmentPath(p, seg) {

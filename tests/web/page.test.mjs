@@ -293,3 +293,35 @@ test('Cancel stops a long run; the page keeps responding and meshes again afterw
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('a 100,000-triangle mesh pans and zooms smoothly', async () => {
+  // Turkey refined for quality under an area bound (km^2): about 100,000 triangles.
+  const { page, errors, context } = await open('?sample=turkey&mode=quality&maxArea=12');
+  const r = await result(page);
+  assert.ok(r.triangles >= 90000, `only ${r.triangles} triangles`);
+  await page.waitForTimeout(600);
+  const fullMs = Number(await page.getAttribute('[data-testid=mesh-canvas]', 'data-render-ms'));
+  const box = await page.$eval('[data-testid=mesh-canvas]', (c) => { const b = c.getBoundingClientRect(); return [b.left, b.top, b.width, b.height]; });
+  await page.evaluate(() => {
+    window.__gaps = [];
+    let last = performance.now();
+    const tick = (t) => { window.__gaps.push(t - last); last = t; if (!window.__stop) requestAnimationFrame(tick); };
+    requestAnimationFrame(tick);
+  });
+  const cx = box[0] + box[2] / 2, cy = box[1] + box[3] / 2;
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  for (let i = 1; i <= 30; i++) { await page.mouse.move(cx + 4 * i, cy + 2 * i); await page.waitForTimeout(16); }
+  await page.mouse.up();
+  for (let i = 0; i < 10; i++) { await page.mouse.wheel(0, -80); await page.waitForTimeout(16); }
+  const gaps = await page.evaluate(() => { window.__stop = true; return window.__gaps.slice(1); });
+  gaps.sort((a, b) => a - b);
+  const p95 = gaps[Math.floor(0.95 * (gaps.length - 1))];
+  console.log(`# ${r.triangles} triangles: full frame ${fullMs} ms; while panning/zooming ${gaps.length} frames, ` +
+    `median ${gaps[gaps.length >> 1].toFixed(1)} ms, p95 ${p95.toFixed(1)} ms, longest ${gaps[gaps.length - 1].toFixed(1)} ms`);
+  assert.ok(p95 < 50, `p95 frame ${p95} ms while panning`);
+  await page.waitForTimeout(600);
+  await shot(page, 'big-mesh-zoomed');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
