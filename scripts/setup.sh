@@ -19,6 +19,7 @@ REQUIREMENTS=(
   "make|ninja:make"
   "/usr/include/gtest/gtest.h:libgtest-dev"
   "chromium:chromium"
+  "emcc:emscripten"
 )
 # ---------------------------------------------------------------------------------------------
 

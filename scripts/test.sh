@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Everything CI checks: setup, build, C++ tests. Exits non-zero on the first failure.
+# Everything CI checks: setup, build, C++ tests (native, and built with emcc under node),
+# JavaScript tests of the npm package. Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -10,7 +11,11 @@ bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
 
 # --- JavaScript / WebAssembly tests (node) ---------------------------------------------------
-# (to come: build the wasm package, then `node --test tests/js`)
+# The C++ suite built with emcc, each test run by node (the toolchain's emulator).
+NODE_PATH=/usr/share/nodejs cmake --build build-wasm -j"$(nproc)"
+ctest --test-dir build-wasm --output-on-failure -j2
+# The npm package in dist/ (built by build.sh): API, modes, errors, heap, types, worker, pack.
+node --test tests/js/
 
 # --- Browser tests (headless Chromium) -------------------------------------------------------
 # The web page under playwright-core with Debian's chromium; screenshots in build/web-artifacts/.

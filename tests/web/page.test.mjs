@@ -17,7 +17,8 @@ let server, chromium, am;
 before(async () => {
   server = await startServer();
   chromium = await launch();
-  am = await (await import(join(root, 'dist', 'node.js'))).default();
+  // The package by its own name, as a user's Node code would load it (package.json exports).
+  am = await (await import('acutemesh')).default();
 });
 after(async () => {
   await chromium?.close();

@@ -1,0 +1,93 @@
+// The package as users get it: `npm pack`, the tarball installed into an empty project, and
+// there: every ../shared/data/poly input meshed to a certified acute mesh through the API,
+// acutemesh/single and acutemesh/worker imported, and the types resolved by tsc from
+// node_modules (moduleResolution nodenext and bundler).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, writeFileSync, rmSync, readdirSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+import { root, sharedPolys } from './helpers.mjs';
+
+const npm = process.platform === 'win32' ? 'npm.cmd' : 'npm';
+const sh = (cmd, args, cwd) => execFileSync(cmd, args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+
+test('npm pack, install into an empty project, mesh every shared .poly acute', async (t) => {
+  const work = mkdtempSync(join(tmpdir(), 'acutemesh-pack-'));
+  t.after(() => rmSync(work, { recursive: true, force: true }));
+
+  const packed = JSON.parse(sh(npm, ['pack', '--json', '--pack-destination', work], root));
+  const files = packed[0].files.map((f) => f.path).sort();
+  for (const f of ['package.json', 'README.md', 'LICENSE', 'dist/acutemesh.wasm', 'dist/acutemesh.mjs',
+    'dist/index.js', 'dist/node.js', 'dist/single.js', 'dist/wasm-inline.js', 'dist/worker.js',
+    'dist/worker-node.js', 'dist/mesh-worker.js', 'dist/mesh-worker-node.js', 'dist/index.d.ts',
+    'dist/single.d.ts', 'dist/worker.d.ts'])
+    assert.ok(files.includes(f), `${f} is not in the tarball`);
+  for (const f of files) assert.ok(/^(dist\/|package\.json$|README\.md$|LICENSE$)/.test(f), `${f} should not ship`);
+  const tarball = join(work, packed[0].filename);
+
+  const app = join(work, 'app');
+  sh('mkdir', ['-p', app]);
+  writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', private: true, type: 'module' }));
+  sh(npm, ['install', '--no-audit', '--no-fund', tarball], app);
+  assert.deepEqual(readdirSync(join(app, 'node_modules')).filter((d) => !d.startsWith('.')), ['acutemesh']);
+
+  writeFileSync(join(app, 'check.mjs'), `
+import { readFileSync } from 'node:fs';
+import { basename } from 'node:path';
+import init from 'acutemesh';
+import initSingle from 'acutemesh/single';
+import { meshInWorker } from 'acutemesh/worker';
+const am = await init();
+const out = [];
+for (const path of process.argv.slice(2)) {
+  const pslg = am.parsePoly(readFileSync(path, 'utf8'), { name: basename(path) });
+  const m = am.mesh(pslg, { mode: 'acute' });
+  const v = am.validate(pslg, m);
+  out.push({ path, status: m.status, certified: m.stats.certified, nonAcute: m.stats.nonAcute,
+             triangles: m.stats.triangles, valid: v.ok, errors: v.errors });
+}
+const single = await initSingle();
+const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
+const s = single.mesh(square, { mode: 'acute' });
+const w = await meshInWorker(square, { mode: 'acute' });
+console.log(JSON.stringify({ out, single: s.stats.certified, worker: w.stats.certified }));
+`);
+  const polys = sharedPolys();
+  assert.ok(polys.length >= 2);
+  const result = JSON.parse(sh(process.execPath, ['check.mjs', ...polys], app));
+  assert.equal(result.out.length, polys.length);
+  for (const r of result.out) {
+    assert.equal(r.valid, true, `${r.path}: ${r.errors.join('; ')}`);
+    assert.equal(r.certified, true, `${r.path} is not certified acute`);
+    assert.equal(r.nonAcute, 0);
+    assert.equal(r.status, 'ok');
+    assert.ok(r.triangles > 0);
+  }
+  assert.equal(result.single, true);
+  assert.equal(result.worker, true);
+
+  // Types from node_modules, as TypeScript users resolve them.
+  writeFileSync(join(app, 'use.mts'), `
+import init, { AcuteMeshError, type MeshResult } from 'acutemesh';
+import initSingle from 'acutemesh/single';
+import { createMeshWorker } from 'acutemesh/worker';
+const am = await init();
+const m: MeshResult = am.mesh(am.fromRings([[[0, 0], [1, 0], [0, 1]]]), { mode: 'acute' });
+const e = new AcuteMeshError('BAD_INPUT', 'x');
+void [m.stats.certified, e.code, initSingle, createMeshWorker];
+`);
+  const tsc = join(root, 'node_modules', 'typescript', 'bin', 'tsc');
+  for (const resolution of [['nodenext', 'nodenext'], ['esnext', 'bundler']]) {
+    let output = '';
+    try {
+      sh(process.execPath, [tsc, '--noEmit', '--strict', '--target', 'es2022', '--lib', 'es2022,dom',
+        '--module', resolution[0], '--moduleResolution', resolution[1], 'use.mts'], app);
+    } catch (e) {
+      output = e.stdout + e.stderr;
+    }
+    assert.equal(output, '', `moduleResolution ${resolution[1]}`);
+  }
+});

@@ -1,0 +1,102 @@
+// acutemesh/worker in Node (worker_threads): results, progress on the calling thread, errors
+// rebuilt as AcuteMeshError, an AbortSignal that terminates a busy worker, and the next call
+// on a fresh worker.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+
+import init from 'acutemesh';
+import { createMeshWorker, meshInWorker, AcuteMeshError } from 'acutemesh/worker';
+import { testData } from './helpers.mjs';
+
+const am = await init();
+const pslg = am.parsePoly(readFileSync(join(testData, 'A.poly'), 'utf8'));
+const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
+const slow = { mode: 'quality', maxArea: 2e-6 };  // about a million triangles: seconds of work
+
+test('a mesh from the worker equals the one made here, with progress', async () => {
+  const worker = createMeshWorker();
+  try {
+    const phases = [];
+    const m = await worker.mesh(pslg, { mode: 'acute', onProgress: (p) => phases.push(p.phase) });
+    const here = am.mesh(pslg, { mode: 'acute' });
+    assert.deepEqual(m.points, here.points);
+    assert.deepEqual(m.triangles, here.triangles);
+    assert.ok(m.points instanceof Float64Array && m.triangles instanceof Uint32Array);
+    assert.ok(m.stats.certified);
+    assert.ok(am.validate(pslg, m).ok);
+    assert.deepEqual(phases.filter((p) => p !== 'refine'), ['delaunay', 'segments', 'domain', 'output']);
+    // Calls queue and run one after another on the same worker.
+    const [a, b] = await Promise.all([worker.mesh(pslg), worker.mesh(square, { mode: 'nonobtuse' })]);
+    assert.equal(a.options.mode, 'cdt');
+    assert.ok(b.stats.certified);
+  } finally {
+    worker.terminate();
+  }
+});
+
+test('errors come back as AcuteMeshError / TypeError', async () => {
+  const worker = createMeshWorker();
+  try {
+    await assert.rejects(worker.mesh({ points: [0, 0, 1, 0], segments: [0, 9] }),
+      (e) => e instanceof AcuteMeshError && e.code === 'BAD_INPUT' && /segment 0 refers to vertex 9/.test(e.message));
+    await assert.rejects(worker.mesh({ points: 'x' }), (e) => e instanceof TypeError);
+    await assert.rejects(worker.mesh(square, { onProgress: 3 }), TypeError);
+    assert.ok((await worker.mesh(square)).stats.triangles > 0);  // still usable
+  } finally {
+    worker.terminate();
+  }
+});
+
+test('abort terminates the busy worker promptly; the next call gets a fresh one', async () => {
+  const worker = createMeshWorker();
+  try {
+    // How long the slow job takes to run through.
+    const t0 = performance.now();
+    const full = await worker.mesh(square, slow);
+    const fullMs = performance.now() - t0;
+    assert.ok(full.stats.triangles > 500000);
+
+    const controller = new AbortController();
+    let sawRefine = false;
+    const t1 = performance.now();
+    const job = worker.mesh(square, {
+      ...slow,
+      signal: controller.signal,
+      onProgress: (p) => {
+        if (p.phase === 'refine' && !sawRefine) {
+          sawRefine = true;
+          controller.abort();
+        }
+      },
+    });
+    const queued = worker.mesh(square, { mode: 'acute' });  // waits behind the aborted job
+    await assert.rejects(job, (e) => e.name === 'AbortError');
+    const abortedMs = performance.now() - t1;
+    assert.ok(sawRefine);
+    assert.ok(abortedMs < fullMs / 2, `aborted after ${abortedMs} ms; the whole job takes ${fullMs} ms`);
+    assert.ok((await queued).stats.certified);
+
+    // Aborted before it starts: rejected at once, the worker is untouched.
+    await assert.rejects(worker.mesh(square, { signal: AbortSignal.abort() }), (e) => e.name === 'AbortError');
+    const reason = new Error('user cancelled');
+    const c = new AbortController();
+    const p = worker.mesh(square, { ...slow, signal: c.signal });
+    setTimeout(() => c.abort(reason), 50);
+    await assert.rejects(p, (e) => e === reason);
+    assert.ok((await worker.mesh(pslg, { mode: 'acute' })).stats.certified);
+  } finally {
+    worker.terminate();
+  }
+});
+
+test('meshInWorker uses one shared worker; terminate rejects pending calls', async () => {
+  const m = await meshInWorker(square, { mode: 'acute' });
+  assert.ok(m.stats.certified);
+  const worker = createMeshWorker();
+  const pending = worker.mesh(square, slow);
+  worker.terminate();
+  await assert.rejects(pending, /terminated/);
+  await assert.rejects(worker.mesh(square), /terminated/);
+});

@@ -1,0 +1,227 @@
+// Embind bindings: the core's C++ API (mesh, validate, the io readers and writers) as plain
+// functions over typed arrays. Bindings only: every check of argument types, every default and
+// every string <-> enum mapping lives in the JS facade (wasm/js/api.js), so the functions here
+// take already-checked numbers and arrays and return plain JS objects that own copies of the
+// data (nothing for JS to delete()).
+#include <emscripten/bind.h>
+#include <emscripten/emscripten.h>
+#include <emscripten/val.h>
+#include <malloc.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "acutemesh/acutemesh.h"
+#include "acutemesh/io.h"
+
+using emscripten::val;
+
+// Out of memory (the heap cannot grow): operator new calls this handler, which marks the
+// instance so the facade can tell this abort from an internal error, then aborts as it
+// would have anyway (exceptions are off, so there is no unwinding to recover in place; the
+// facade replaces the instance).
+EM_JS(void, markOutOfMemory, (), { Module['outOfMemory'] = true; });
+
+namespace {
+
+[[noreturn]] void onOutOfMemory() {
+  markOutOfMemory();
+  std::abort();
+}
+[[maybe_unused]] const bool kNewHandlerInstalled = (std::set_new_handler(onOutOfMemory), true);
+
+using namespace acutemesh;
+
+// A JS typed array (or array of numbers) into a vector: one TypedArray.set into wasm memory.
+template <class T>
+std::vector<T> fromJs(const val& array) {
+  if (array.isUndefined() || array.isNull()) return {};
+  return emscripten::convertJSArrayToNumberVector<T>(array);
+}
+
+// A vector out as a typed array that JS owns (slice copies out of the wasm heap, so the view
+// never dangles when memory grows or the vector is freed).
+template <class T>
+val toJs(const std::vector<T>& v) {
+  return val(emscripten::typed_memory_view(v.size(), v.data())).call<val>("slice");
+}
+
+val stringsToJs(const std::vector<std::string>& strings) {
+  val out = val::array();
+  for (const std::string& s : strings) out.call<void>("push", s);
+  return out;
+}
+
+Pslg pslgFromJs(const val& points, const val& segments, const val& holes) {
+  Pslg p;
+  p.points = fromJs<double>(points);
+  p.segments = fromJs<uint32_t>(segments);
+  p.holes = fromJs<double>(holes);
+  return p;
+}
+
+Mesh meshFromJs(const val& m) {
+  Mesh mesh;
+  mesh.points = fromJs<double>(m["points"]);
+  mesh.triangles = fromJs<uint32_t>(m["triangles"]);
+  mesh.segments = fromJs<uint32_t>(m["segments"]);
+  mesh.vertexKind = fromJs<uint8_t>(m["vertexKind"]);
+  return mesh;
+}
+
+// Options from the facade's checked object: mode and fill arrive as the enums' numbers.
+Options optionsFromJs(const val& o) {
+  Options opt;
+  opt.mode = Mode(o["mode"].as<int>());
+  opt.fill = FillRule(o["fill"].as<int>());
+  opt.convexHull = o["convexHull"].as<bool>();
+  opt.maxAngle = o["maxAngle"].as<double>();
+  opt.minAngle = o["minAngle"].as<double>();
+  opt.maxArea = o["maxArea"].as<double>();
+  opt.maxSteiner = o["maxSteiner"].as<uint32_t>();
+  opt.timeLimit = o["timeLimit"].as<double>();
+  return opt;
+}
+
+val statsToJs(const Stats& s) {
+  val o = val::object();
+  o.set("inputVertices", s.inputVertices);
+  o.set("inputSegments", s.inputSegments);
+  o.set("inputHoles", s.inputHoles);
+  o.set("vertices", s.vertices);
+  o.set("triangles", s.triangles);
+  o.set("segments", s.segments);
+  o.set("steiner", s.steiner);
+  o.set("duplicates", s.duplicates);
+  o.set("minAngle", s.minAngle);
+  o.set("maxAngle", s.maxAngle);
+  o.set("nonAcute", s.nonAcute);
+  o.set("obtuse", s.obtuse);
+  o.set("targetMet", s.targetMet);
+  o.set("certified", s.certified);
+  o.set("smallestInputAngle", s.smallestInputAngle);
+  val phases = val::object();
+  for (const PhaseTime& p : s.phases) phases.set(p.phase, p.seconds);
+  o.set("phases", phases);
+  o.set("seconds", s.seconds);
+  o.set("warnings", stringsToJs(s.warnings));
+  return o;
+}
+
+// mesh(): `onProgress(phase, fraction, vertices)` is called synchronously from inside the
+// core; a truthy return value asks the core to stop (status Cancelled). The JS facade turns
+// AbortSignals and exceptions thrown by the user's callback into that return value, so no JS
+// exception ever unwinds through C++ frames (which would leak their memory).
+val meshJs(const val& points, const val& segments, const val& holes, const val& options,
+           const val& onProgress) {
+  Pslg input = pslgFromJs(points, segments, holes);
+  Options opt = optionsFromJs(options);
+  std::atomic<bool> cancel{false};
+  opt.cancel = &cancel;
+  if (onProgress.typeOf().as<std::string>() == "function") {
+    opt.progress = [&](const Progress& p) {
+      if (onProgress(std::string(p.phase), p.fraction, p.vertices).as<bool>()) cancel = true;
+    };
+  }
+  Result r = mesh(input, opt);
+  val out = val::object();
+  out.set("status", int(r.status));
+  out.set("message", r.message);
+  out.set("points", toJs(r.mesh.points));
+  out.set("triangles", toJs(r.mesh.triangles));
+  out.set("segments", toJs(r.mesh.segments));
+  out.set("vertexKind", toJs(r.mesh.vertexKind));
+  out.set("stats", statsToJs(r.stats));
+  return out;
+}
+
+val validateJs(const val& points, const val& segments, const val& holes, const val& mesh,
+               const val& options) {
+  Validation v = validate(pslgFromJs(points, segments, holes), meshFromJs(mesh),
+                          optionsFromJs(options));
+  val out = val::object();
+  out.set("ok", v.ok);
+  out.set("errors", stringsToJs(v.errors));
+  return out;
+}
+
+// Parsers: {ok, message} on failure, else the PSLG and what the text said about it.
+val inputToJs(const ParseResult& r, const Input& in) {
+  val out = val::object();
+  out.set("ok", r.ok);
+  out.set("message", r.message);
+  if (!r.ok) return out;
+  out.set("points", toJs(in.pslg.points));
+  out.set("segments", toJs(in.pslg.segments));
+  out.set("holes", toJs(in.pslg.holes));
+  out.set("format", int(in.format));
+  out.set("hasRings", in.hasRings);
+  out.set("instanceUid", in.instanceUid);
+  out.set("warnings", stringsToJs(in.warnings));
+  return out;
+}
+
+val parsePolyJs(const std::string& text, const std::string& name, const std::string& nodeText,
+                const std::string& nodeName) {
+  Input in;
+  ParseResult r = parsePoly(text, name, in, nodeText, nodeName);
+  return inputToJs(r, in);
+}
+
+val parseNodeJs(const std::string& text, const std::string& name) {
+  Input in;
+  ParseResult r = parseNode(text, name, in);
+  return inputToJs(r, in);
+}
+
+val parseJsonJs(const std::string& text, const std::string& name) {
+  Input in;
+  ParseResult r = parseJson(text, name, in);
+  return inputToJs(r, in);
+}
+
+// Writers, by format name (the facade only passes the names below).
+std::string formatJs(const std::string& format, const val& m) {
+  Mesh mesh = meshFromJs(m);
+  if (format == "node") return formatNode(mesh);
+  if (format == "ele") return formatEle(mesh);
+  if (format == "poly") return formatPoly(mesh);
+  if (format == "json") return formatJson(mesh);
+  if (format == "off") return formatOff(mesh);
+  if (format == "obj") return formatObj(mesh);
+  if (format == "svg") return formatSvg(mesh);
+  return {};
+}
+
+std::string formatCgshopJs(const val& m, const std::string& uid, uint32_t instanceVertices) {
+  return formatCgshopSolution(meshFromJs(m), uid, instanceVertices);
+}
+
+// The wasm heap: its size (grows, never shrinks) and the bytes malloc has handed out and not
+// taken back. The tests use `allocated` to show that calls leave nothing behind.
+val memoryJs() {
+  struct mallinfo mi = mallinfo();
+  val out = val::object();
+  out.set("heapSize", double(__builtin_wasm_memory_size(0)) * 65536);
+  out.set("allocated", double(mi.uordblks));
+  return out;
+}
+
+std::string versionJs() { return version(); }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(acutemesh) {
+  emscripten::function("core_mesh", &meshJs);
+  emscripten::function("core_validate", &validateJs);
+  emscripten::function("core_parsePoly", &parsePolyJs);
+  emscripten::function("core_parseNode", &parseNodeJs);
+  emscripten::function("core_parseJson", &parseJsonJs);
+  emscripten::function("core_format", &formatJs);
+  emscripten::function("core_formatCgshop", &formatCgshopJs);
+  emscripten::function("core_memory", &memoryJs);
+  emscripten::function("core_version", &versionJs);
+}

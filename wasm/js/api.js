@@ -1,0 +1,466 @@
+// The JavaScript API over the Embind module (bindings.cpp): argument checks, defaults, enum
+// names, errors, and one wasm instance per API object. Shared by every entry point (index.js
+// for browsers and bundlers, node.js, single.js); each entry supplies how to get the compiled
+// WebAssembly.Module, this file does the rest.
+
+/** Errors from acutemesh itself; `code` says what kind (see index.d.ts). */
+export class AcuteMeshError extends Error {
+  constructor(code, message) {
+    super(message);
+    this.name = 'AcuteMeshError';
+    this.code = code;
+  }
+}
+
+// The C++ enums' values (acutemesh.h), by the names the CLI uses.
+const MODES = { delaunay: 0, cdt: 1, quality: 2, nonobtuse: 3, acute: 4 };
+const FILLS = { triangle: 0, evenodd: 1, nonzero: 2 };
+const STATUS_OK = 0, STATUS_TARGET_NOT_MET = 1, STATUS_BAD_INPUT = 2, STATUS_CANCELLED = 3;
+const FORMATS = ['Unknown', 'Poly', 'Node', 'JsonPslg', 'CgshopInstance'];  // InputFormat
+const WASM_PAGE = 65536;
+const INITIAL_MEMORY = 16 * 1024 * 1024;  // -sINITIAL_MEMORY in wasm/CMakeLists.txt
+
+const describe = (v) => (v === null ? 'null' : Array.isArray(v) ? 'an array' : typeof v);
+
+function badInput(message) {
+  return new AcuteMeshError('BAD_INPUT', message);
+}
+
+function abortError(signal) {
+  if (signal && signal.reason !== undefined) return signal.reason;
+  return new DOMException('The operation was aborted', 'AbortError');
+}
+
+// --- argument conversion ------------------------------------------------------------------
+
+// Coordinates: a Float64Array as is; any other typed array or an array of numbers copied; an
+// array of [x, y] pairs flattened. Non-numbers are TypeErrors naming the item; non-finite
+// numbers pass through (the core reports them as BAD_INPUT with the vertex index).
+function toCoordinates(value, what) {
+  if (value instanceof Float64Array) return value;
+  if (ArrayBuffer.isView(value) && !(value instanceof DataView)) return Float64Array.from(value);
+  if (!Array.isArray(value))
+    throw new TypeError(`${what} must be a Float64Array or an array of numbers, not ${describe(value)}`);
+  if (value.length > 0 && Array.isArray(value[0])) {
+    const out = new Float64Array(2 * value.length);
+    for (let i = 0; i < value.length; ++i) {
+      const p = value[i];
+      if (!Array.isArray(p) || p.length < 2 || typeof p[0] !== 'number' || typeof p[1] !== 'number')
+        throw new TypeError(`${what}[${i}] must be an [x, y] pair of numbers`);
+      out[2 * i] = p[0];
+      out[2 * i + 1] = p[1];
+    }
+    return out;
+  }
+  for (let i = 0; i < value.length; ++i)
+    if (typeof value[i] !== 'number')
+      throw new TypeError(`${what}[${i}] must be a number, not ${describe(value[i])}`);
+  return Float64Array.from(value);
+}
+
+// Indices: a Uint32Array as is; other arrays (flat, or of [a, b] / [a, b, c] tuples) checked
+// item by item, since a Uint32Array would silently wrap -1 or 2.5 into another vertex.
+function toIndices(value, what, arity) {
+  if (value instanceof Uint32Array) return value;
+  let flat = value;
+  if (Array.isArray(value) && value.length > 0 && Array.isArray(value[0])) {
+    flat = new Array(arity * value.length);
+    for (let i = 0; i < value.length; ++i) {
+      const t = value[i];
+      if (!Array.isArray(t) || t.length !== arity)
+        throw new TypeError(`${what}[${i}] must be an array of ${arity} vertex indices`);
+      for (let k = 0; k < arity; ++k) flat[arity * i + k] = t[k];
+    }
+  } else if (!Array.isArray(value) && !(ArrayBuffer.isView(value) && !(value instanceof DataView))) {
+    throw new TypeError(`${what} must be a Uint32Array or an array of vertex indices, not ${describe(value)}`);
+  }
+  const out = new Uint32Array(flat.length);
+  for (let i = 0; i < flat.length; ++i) {
+    const v = flat[i];
+    if (typeof v !== 'number' && typeof v !== 'bigint')
+      throw new TypeError(`${what}[${i}] must be a vertex index (a number), not ${describe(v)}`);
+    const n = Number(v);
+    if (!Number.isInteger(n) || n < 0 || n > 0xffffffff)
+      throw badInput(`${what}[${i}] is ${v}, not a vertex index (an integer >= 0)`);
+    out[i] = n;
+  }
+  return out;
+}
+
+function checkObject(value, what) {
+  if (typeof value !== 'object' || value === null || Array.isArray(value))
+    throw new TypeError(`${what} must be an object, not ${describe(value)}`);
+}
+
+function toPslg(pslg, what = 'pslg') {
+  checkObject(pslg, what);
+  if (pslg.points === undefined) throw new TypeError(`${what}.points is missing`);
+  return {
+    points: toCoordinates(pslg.points, `${what}.points`),
+    segments: pslg.segments == null ? new Uint32Array(0) : toIndices(pslg.segments, `${what}.segments`, 2),
+    holes: pslg.holes == null ? new Float64Array(0) : toCoordinates(pslg.holes, `${what}.holes`),
+    fill: pslg.fill,
+  };
+}
+
+// A mesh as mesh() returns it (or any object with points and triangles), for the writers
+// and validate().
+function toMesh(m, what = 'mesh') {
+  checkObject(m, what);
+  if (m.points === undefined) throw new TypeError(`${what}.points is missing`);
+  if (m.triangles === undefined) throw new TypeError(`${what}.triangles is missing`);
+  const mesh = {
+    points: toCoordinates(m.points, `${what}.points`),
+    triangles: toIndices(m.triangles, `${what}.triangles`, 3),
+    segments: m.segments == null ? new Uint32Array(0) : toIndices(m.segments, `${what}.segments`, 2),
+    vertexKind: m.vertexKind instanceof Uint8Array ? m.vertexKind : new Uint8Array(0),
+  };
+  return mesh;
+}
+
+// The writers index points by the triangles and segments: check every index first, so a bad
+// mesh is a BAD_INPUT naming the item rather than garbage read from the wasm heap.
+function checkMeshIndices(mesh, what = 'mesh') {
+  if (mesh.points.length % 2) throw badInput(`${what}.points has odd length ${mesh.points.length}`);
+  if (mesh.triangles.length % 3)
+    throw badInput(`${what}.triangles has length ${mesh.triangles.length}, not a multiple of 3`);
+  if (mesh.segments.length % 2) throw badInput(`${what}.segments has odd length ${mesh.segments.length}`);
+  const n = mesh.points.length / 2;
+  for (const key of ['triangles', 'segments']) {
+    const a = mesh[key];
+    for (let i = 0; i < a.length; ++i)
+      if (a[i] >= n)
+        throw badInput(`${what}.${key}[${i}] refers to vertex ${a[i]}, but there are only ${n} vertices`);
+  }
+  if (mesh.vertexKind.length !== n) mesh.vertexKind = new Uint8Array(0);
+}
+
+function enumOption(value, table, what, fallback) {
+  if (value === undefined) return fallback;
+  if (typeof value !== 'string') throw new TypeError(`${what} must be a string, not ${describe(value)}`);
+  if (!(value in table))
+    throw badInput(`unknown ${what} '${value}' (${Object.keys(table).join(', ')})`);
+  return value;
+}
+
+function numberOption(options, key, fallback) {
+  const v = options[key];
+  if (v === undefined) return fallback;
+  if (typeof v !== 'number') throw new TypeError(`options.${key} must be a number, not ${describe(v)}`);
+  return v;
+}
+
+// The options that describe the job, as names (what a mesh result carries, and what
+// validate() reads back); functions and signals are handled by mesh() itself.
+function toOptions(options, pslgFill) {
+  if (options === undefined) options = {};
+  checkObject(options, 'options');
+  const mode = enumOption(options.mode, MODES, 'mode', 'cdt');
+  const fill = enumOption(options.fill, FILLS, 'fill rule', pslgFill === undefined ? 'triangle' : pslgFill);
+  if (options.convexHull !== undefined && typeof options.convexHull !== 'boolean')
+    throw new TypeError(`options.convexHull must be a boolean, not ${describe(options.convexHull)}`);
+  const maxSteiner = numberOption(options, 'maxSteiner', 0);
+  if (!Number.isInteger(maxSteiner) || maxSteiner < 0 || maxSteiner > 0xffffffff)
+    throw badInput(`maxSteiner must be an integer from 0 (automatic) to 4294967295, not ${maxSteiner}`);
+  const timeLimit = numberOption(options, 'timeLimit', 0);
+  if (!(timeLimit >= 0) || timeLimit === Infinity)
+    throw badInput(`timeLimit must be a number of seconds >= 0 (0: none), not ${timeLimit}`);
+  return {
+    mode,
+    fill,
+    convexHull: options.convexHull === true,
+    // The core checks the ranges of these three and names the option when one is wrong.
+    maxAngle: numberOption(options, 'maxAngle', 90),
+    minAngle: numberOption(options, 'minAngle', 0),
+    maxArea: numberOption(options, 'maxArea', 0),
+    maxSteiner,
+    timeLimit,
+  };
+}
+
+const toCoreOptions = (o) => ({ ...o, mode: MODES[o.mode], fill: FILLS[o.fill] });
+
+function checkSignal(signal) {
+  if (signal === undefined) return;
+  if (typeof signal !== 'object' || signal === null || typeof signal.aborted !== 'boolean')
+    throw new TypeError(`options.signal must be an AbortSignal, not ${describe(signal)}`);
+}
+
+function checkText(text, what) {
+  if (typeof text !== 'string') throw new TypeError(`${what} must be a string, not ${describe(text)}`);
+}
+
+function parsed(r, fill) {
+  if (!r.ok) throw badInput(r.message);
+  const out = { points: r.points, segments: r.segments, holes: r.holes };
+  if (fill) out.fill = fill;
+  out.warnings = r.warnings;
+  return out;
+}
+
+// --- rings --------------------------------------------------------------------------------
+
+// Closed outlines (GeoJSON polygon rings, font contours) into a PSLG: each ring's points
+// become vertices and consecutive points segments, closing back to the first. A last point
+// equal to the first (GeoJSON repeats it) is dropped. The same rules as the core's JSON
+// reader for {"rings": ...}.
+function ringsToPslg(rings, options) {
+  if (!Array.isArray(rings)) throw new TypeError(`rings must be an array of rings, not ${describe(rings)}`);
+  if (options === undefined) options = {};
+  checkObject(options, 'options');
+  const fill = enumOption(options.fill, FILLS, 'fill rule', 'evenodd');
+  const flat = rings.map((ring, r) => toCoordinates(ring, `rings[${r}]`));
+  let total = 0;
+  const counts = flat.map((xy, r) => {
+    let n = xy.length / 2;
+    if (xy.length % 2) throw badInput(`rings[${r}] has an odd number of coordinates (${xy.length})`);
+    if (n >= 2 && xy[0] === xy[2 * n - 2] && xy[1] === xy[2 * n - 1]) --n;
+    if (n < 3) throw badInput(`rings[${r}] has ${n} distinct points; a ring needs at least 3`);
+    total += n;
+    return n;
+  });
+  const points = new Float64Array(2 * total);
+  const segments = new Uint32Array(2 * total);
+  let base = 0;
+  flat.forEach((xy, r) => {
+    const n = counts[r];
+    points.set(xy.subarray(0, 2 * n), 2 * base);
+    for (let i = 0; i < n; ++i) {
+      segments[2 * (base + i)] = base + i;
+      segments[2 * (base + i) + 1] = base + ((i + 1) % n);
+    }
+    base += n;
+  });
+  return { points, segments, holes: new Float64Array(0), fill };
+}
+
+// --- instances ----------------------------------------------------------------------------
+
+// Arguments for the Emscripten factory that instantiate `compiled` ourselves: synchronously
+// (`new WebAssembly.Instance`, for restarts) or not. An asynchronous instantiation error goes
+// to `onFailure` (the glue's own promise would never settle).
+function moduleArgs(compiled, memoryLimit, sync, onFailure) {
+  const args = {
+    instantiateWasm(imports, receive) {
+      if (sync) {
+        receive(new WebAssembly.Instance(compiled, imports), compiled);
+      } else {
+        WebAssembly.instantiate(compiled, imports).then(
+          (instance) => receive(instance, compiled),
+          onFailure);
+      }
+      return {};
+    },
+    // The core prints nothing; the glue prints only an abort's reason, which the API turns
+    // into the error it throws.
+    print() {},
+    printErr() {},
+  };
+  // The tests (and embedders) may cap the heap below the build's 2 GB: the glue then grows
+  // this memory, and growth failing past the cap is an ordinary out-of-memory.
+  if (memoryLimit) {
+    args.wasmMemory = new WebAssembly.Memory({
+      initial: INITIAL_MEMORY / WASM_PAGE,
+      maximum: Math.ceil(Math.max(INITIAL_MEMORY, memoryLimit) / WASM_PAGE),
+    });
+  }
+  return args;
+}
+
+function instantiate(factory, compiled, memoryLimit) {
+  let fail;
+  const failed = new Promise((resolve, reject) => { fail = reject; });
+  return Promise.race([factory(moduleArgs(compiled, memoryLimit, false, (e) => fail(e))), failed]);
+}
+
+// Synchronously, or null where the platform refuses (Chromium's main thread does for modules
+// over 4 KB). After new WebAssembly.Instance the glue starts the runtime before the factory
+// returns, so the bindings are on `args` at once.
+function instantiateNow(factory, compiled, memoryLimit) {
+  try {
+    const args = moduleArgs(compiled, memoryLimit, true);
+    factory(args).catch(() => {});
+    return typeof args.core_mesh === 'function' ? args : null;
+  } catch (_) {
+    return null;
+  }
+}
+
+// An API object over one wasm instance M of `compiled`. After the instance aborts (out of
+// memory: the heap cannot grow past 2 GB or options.maxMemory; or an internal error), its
+// memory is lost to leaked allocations and a half-finished call, so the API object replaces
+// it with a fresh instance of the same compiled module and throws an AcuteMeshError: the
+// object stays usable, at the cost of a re-instantiation (milliseconds).
+function makeApi(factory, compiled, memoryLimit, M) {
+  // Replaces the dead instance, synchronously where possible; otherwise calls made before the
+  // asynchronous restart finishes throw RESTARTING.
+  function restart() {
+    M = instantiateNow(factory, compiled, memoryLimit);
+    if (M) return;
+    instantiate(factory, compiled, memoryLimit).then((m) => { M = m; }, () => {});
+  }
+
+  // Every call into wasm goes through here.
+  function call(f) {
+    if (!M) {
+      throw new AcuteMeshError('RESTARTING',
+        'the wasm instance is restarting after an earlier failure; try again shortly');
+    }
+    const instance = M;
+    try {
+      return f(instance);
+    } catch (e) {
+      if (e instanceof AcuteMeshError || e instanceof TypeError) throw e;
+      const outOfMemory = instance.outOfMemory === true;
+      restart();
+      if (outOfMemory) {
+        const limit = memoryLimit || 2 ** 31;
+        throw new AcuteMeshError('OUT_OF_MEMORY',
+          `out of memory: the job needs more than the wasm heap's ${Math.round(limit / 2 ** 20)} MB ` +
+          `(the module was reset and can be used again)`);
+      }
+      throw new AcuteMeshError('INTERNAL',
+        `internal error in the wasm module (${e && e.message ? e.message : e}); the module was reset ` +
+        `and can be used again`);
+    }
+  }
+
+  const formatter = (format) => (m) => {
+    const mesh = toMesh(m);
+    checkMeshIndices(mesh);
+    return call((I) => I.core_format(format, mesh));
+  };
+
+  const api = {
+    version: M.core_version(),
+
+    parsePoly(text, options = {}) {
+      checkText(text, 'text');
+      checkObject(options, 'options');
+      const name = options.name === undefined ? 'input.poly' : String(options.name);
+      const nodeText = options.nodeText === undefined ? '' : options.nodeText;
+      checkText(nodeText, 'options.nodeText');
+      const nodeName = name.replace(/\.poly$/i, '') + '.node';
+      return parsed(call((I) => I.core_parsePoly(text, name, nodeText, nodeName)));
+    },
+
+    parseNode(text, options = {}) {
+      checkText(text, 'text');
+      checkObject(options, 'options');
+      const name = options.name === undefined ? 'input.node' : String(options.name);
+      return parsed(call((I) => I.core_parseNode(text, name)));
+    },
+
+    // JSON in any of the core's three shapes: a PSLG, {"rings": ...} (fill 'evenodd' unless
+    // the caller says otherwise) or a CG:SHOP 2025 instance (instanceUid set).
+    parseJson(text, options = {}) {
+      checkText(text, 'text');
+      checkObject(options, 'options');
+      const name = options.name === undefined ? 'input.json' : String(options.name);
+      const r = call((I) => I.core_parseJson(text, name));
+      const out = parsed(r, r.ok && r.hasRings ? 'evenodd' : undefined);
+      if (r.ok && FORMATS[r.format] === 'CgshopInstance') out.instanceUid = r.instanceUid;
+      return out;
+    },
+
+    fromRings: ringsToPslg,
+
+    mesh(pslg, options = {}) {
+      const input = toPslg(pslg);
+      const opts = toOptions(options, input.fill);
+      const { onProgress, signal } = options;
+      if (onProgress !== undefined && typeof onProgress !== 'function')
+        throw new TypeError(`options.onProgress must be a function, not ${describe(onProgress)}`);
+      checkSignal(signal);
+      if (signal && signal.aborted) throw abortError(signal);
+      // The core calls back synchronously; a true return asks it to stop. An exception from
+      // the user's callback is kept and rethrown after the core has returned, so it never
+      // unwinds through C++ frames.
+      let callbackError;
+      let failed = false;
+      const progress = onProgress || signal ? (phase, fraction, vertices) => {
+        if (onProgress && !failed) {
+          try {
+            onProgress({ phase, fraction, vertices });
+          } catch (e) {
+            callbackError = e;
+            failed = true;
+          }
+        }
+        return failed || (signal !== undefined && signal.aborted);
+      } : undefined;
+      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, toCoreOptions(opts), progress));
+      if (failed) throw callbackError;
+      if (r.status === STATUS_CANCELLED) throw abortError(signal);
+      if (r.status === STATUS_BAD_INPUT) throw badInput(r.message);
+      return {
+        points: r.points,
+        triangles: r.triangles,
+        segments: r.segments,
+        vertexKind: r.vertexKind,
+        stats: r.stats,
+        status: r.status === STATUS_TARGET_NOT_MET ? 'target-not-met' : 'ok',
+        message: r.message,
+        options: opts,
+      };
+    },
+
+    validate(pslg, m, options) {
+      const input = toPslg(pslg);
+      const mesh = toMesh(m);
+      if (options === undefined) options = m.options === undefined ? {} : m.options;
+      const opts = toOptions(options, input.fill);
+      return call((I) => I.core_validate(input.points, input.segments, input.holes, mesh, toCoreOptions(opts)));
+    },
+
+    toNode: formatter('node'),
+    toEle: formatter('ele'),
+    toPoly: formatter('poly'),
+    toJSON: formatter('json'),
+    toOFF: formatter('off'),
+    toOBJ: formatter('obj'),
+    toSVG: formatter('svg'),
+
+    // The CG:SHOP 2025 solution of a mesh of `instance` (parseJson's result for an instance).
+    toCgshop(m, instance) {
+      const mesh = toMesh(m);
+      checkMeshIndices(mesh);
+      checkObject(instance, 'instance');
+      if (typeof instance.instanceUid !== 'string')
+        throw new TypeError('instance.instanceUid must be a string (parseJson of a CG:SHOP 2025 instance)');
+      const n = toCoordinates(instance.points, 'instance.points').length / 2;
+      return call((I) => I.core_formatCgshop(mesh, instance.instanceUid, n));
+    },
+
+    // The wasm heap: its size in bytes (grows, never shrinks) and the bytes allocated in it.
+    memory() {
+      return call((I) => I.core_memory());
+    },
+  };
+  return api;
+}
+
+// Entry points call this with the glue's factory and a function that resolves the
+// WebAssembly.Module for the given init options.
+export function makeEntry(factory, compile) {
+  async function createInstance(options = {}) {
+    checkObject(options, 'options');
+    const { maxMemory } = options;
+    if (maxMemory !== undefined && (typeof maxMemory !== 'number' || !(maxMemory > 0)))
+      throw new TypeError('options.maxMemory must be a positive number of bytes');
+    const compiled = options.wasmModule instanceof WebAssembly.Module ? options.wasmModule : await compile(options);
+    const M = await instantiate(factory, compiled, maxMemory);
+    const api = makeApi(factory, compiled, maxMemory, M);
+    api.wasmModule = compiled;
+    return api;
+  }
+  let memo = null;
+  function init(options) {
+    if (!memo) {
+      memo = createInstance(options);
+      memo.catch(() => { memo = null; });  // a failed load may be retried
+    }
+    return memo;
+  }
+  return { init, createInstance };
+}

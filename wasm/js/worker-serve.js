@@ -1,0 +1,25 @@
+// The worker side of acutemesh/worker: one job at a time, progress and the result posted
+// back (the result's arrays transferred, not copied). Shared by mesh-worker.js (browsers) and
+// mesh-worker-node.js (worker_threads); `post` and `listen` are the platform's.
+export function serve(init, post, listen) {
+  let api = null;
+  listen(async (message) => {
+    const { id, pslg, options, initOptions } = message;
+    try {
+      if (!api) api = await init(initOptions);
+      const opts = { ...options };
+      if (options.progress) {
+        opts.onProgress = (p) => post({ id, type: 'progress', progress: p });
+      }
+      delete opts.progress;
+      const m = api.mesh(pslg, opts);
+      post({ id, type: 'result', mesh: m },
+        [m.points.buffer, m.triangles.buffer, m.segments.buffer, m.vertexKind.buffer]);
+    } catch (e) {
+      const error = e instanceof Error
+        ? { name: e.name, code: e.code, message: e.message }
+        : { name: 'Error', message: String(e) };
+      post({ id, type: 'error', error });
+    }
+  });
+}

@@ -1,0 +1,272 @@
+// Types of the acutemesh npm package (written by hand: Emscripten 3.1.6 has no --emit-tsd).
+// The same API comes from 'acutemesh' (Node, browsers, bundlers) and 'acutemesh/single'.
+
+/** Which job mesh() does. */
+export type Mode =
+  /** Delaunay triangulation of the points (segments and holes ignored). */
+  | 'delaunay'
+  /** Constrained Delaunay triangulation of the PSLG, restricted to its domain (default). */
+  | 'cdt'
+  /** Refine until every angle >= minAngle (default 20) and every area <= maxArea. */
+  | 'quality'
+  /** Refine until every angle <= 90 degrees (certified exactly). */
+  | 'nonobtuse'
+  /** Refine until every angle < maxAngle (default 90: certified exactly). */
+  | 'acute';
+
+/**
+ * Which triangles form the domain: 'triangle' (Triangle's rule: the convex hull minus what is
+ * reachable from outside or from a hole point without crossing a segment), 'evenodd' or
+ * 'nonzero' (by the winding number of the directed segments).
+ */
+export type FillRule = 'triangle' | 'evenodd' | 'nonzero';
+
+/** A planar straight-line graph: flat arrays, x/y interleaved, 0-based vertex indices. */
+export interface Pslg {
+  /** x0, y0, x1, y1, ... */
+  points: Float64Array;
+  /** a0, b0, a1, b1, ...: a segment from vertex a to vertex b. */
+  segments: Uint32Array;
+  /** x, y of a point inside each hole ('triangle' fill rule only). */
+  holes: Float64Array;
+  /** The fill rule the source implies (fromRings, parseJson of rings); mesh() uses it unless options.fill says otherwise. */
+  fill?: FillRule;
+}
+
+/** What mesh() and validate() accept: typed arrays, flat number arrays, or arrays of pairs. */
+export interface PslgInput {
+  points: Float64Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]>;
+  segments?: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
+  holes?: Float64Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
+  fill?: FillRule;
+}
+
+/** A parser's result: the PSLG and what the parser tolerated ("NAME:LINE: ..."). */
+export interface ParsedPslg extends Pslg {
+  warnings: string[];
+  /** CG:SHOP 2025 instances only (parseJson). */
+  instanceUid?: string;
+}
+
+export interface Progress {
+  /** 'delaunay', 'segments', 'domain', 'refine' or 'output'. */
+  phase: string;
+  /** 0..1 within the phase, or -1 when unknown. */
+  fraction: number;
+  /** Current vertex count (0 when not known). */
+  vertices: number;
+}
+
+/**
+ * An AbortSignal (written structurally so that the types need neither the DOM library nor
+ * @types/node).
+ */
+export interface AbortSignalLike {
+  readonly aborted: boolean;
+  readonly reason?: unknown;
+  addEventListener(type: 'abort', listener: () => void, options?: { once?: boolean }): void;
+  removeEventListener(type: 'abort', listener: () => void): void;
+}
+
+/** A compiled WebAssembly.Module (typed loosely for the same reason). */
+export type WasmModule = object;
+
+export interface MeshOptions {
+  /** Default 'cdt'. */
+  mode?: Mode;
+  /** Default: the PSLG's own fill, else 'triangle'. */
+  fill?: FillRule;
+  /** Keep every triangle of the convex hull (hole points still apply). */
+  convexHull?: boolean;
+  /** Degrees; acute mode: every angle < maxAngle (60 < maxAngle <= 90; default 90, exact). */
+  maxAngle?: number;
+  /** Degrees; smallest angle wanted (quality mode: default 20). */
+  minAngle?: number;
+  /** Largest triangle area wanted (0: none). */
+  maxArea?: number;
+  /** Steiner point budget (0: automatic, 50 per input vertex and at least 20000). */
+  maxSteiner?: number;
+  /** Seconds (0: none). When it ends, the best mesh so far comes back with stats.targetMet false. */
+  timeLimit?: number;
+  /** Called synchronously from inside mesh() after each phase and now and then while refining. */
+  onProgress?: (progress: Progress) => void;
+  /**
+   * Checked at each progress report: once aborted, mesh() stops and throws signal.reason (an
+   * AbortError by default). In the calling thread only code run from onProgress can abort it;
+   * use acutemesh/worker to cancel from outside.
+   */
+  signal?: AbortSignalLike;
+}
+
+/** The options a mesh was made with, as mesh() normalised them. */
+export interface ResolvedOptions {
+  mode: Mode;
+  fill: FillRule;
+  convexHull: boolean;
+  maxAngle: number;
+  minAngle: number;
+  maxArea: number;
+  maxSteiner: number;
+  timeLimit: number;
+}
+
+export interface MeshStats {
+  inputVertices: number;
+  inputSegments: number;
+  inputHoles: number;
+  vertices: number;
+  triangles: number;
+  segments: number;
+  /** Vertices added (segment crossings count too). */
+  steiner: number;
+  /** Input vertices merged into an earlier equal one. */
+  duplicates: number;
+  /** Degrees, over all output triangles. */
+  minAngle: number;
+  maxAngle: number;
+  /** Triangles with a corner >= 90 degrees (exact). */
+  nonAcute: number;
+  /** Triangles with a corner > 90 degrees (exact). */
+  obtuse: number;
+  /** Refinement modes: every triangle meets the target. */
+  targetMet: boolean;
+  /** Acute / non-obtuse target met, checked with exact dot products. */
+  certified: boolean;
+  /** Smallest angle between two input segments (degrees; 180 when none meet). */
+  smallestInputAngle: number;
+  /** Wall time per phase, seconds. */
+  phases: Record<string, number>;
+  /** Wall time of the whole call, seconds. */
+  seconds: number;
+  warnings: string[];
+}
+
+/**
+ * A mesh. Vertex i is input vertex i for every input vertex; Steiner points follow. Triangles
+ * are counter-clockwise.
+ */
+export interface MeshResult {
+  points: Float64Array;
+  /** a, b, c per triangle. */
+  triangles: Uint32Array;
+  /** a, b per mesh edge lying on an input segment. */
+  segments: Uint32Array;
+  /** Per vertex: 0 input, 1 unused input (duplicate or outside), 2 on a segment, 3 free. */
+  vertexKind: Uint8Array;
+  stats: MeshStats;
+  /**
+   * 'target-not-met': a budget (maxSteiner, timeLimit) ended first, or an angle bound below 90
+   * could not be reached. Not an error: the best mesh so far, with stats.targetMet false.
+   */
+  status: 'ok' | 'target-not-met';
+  /** Empty when status is 'ok'; otherwise why. */
+  message: string;
+  options: ResolvedOptions;
+}
+
+/** What the writers and validate() accept as a mesh. */
+export interface MeshInput {
+  points: Float64Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]>;
+  triangles: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number, number]>;
+  segments?: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
+  vertexKind?: Uint8Array;
+  options?: Partial<ResolvedOptions>;
+}
+
+export interface Validation {
+  ok: boolean;
+  /** The first few problems found, each naming the item. */
+  errors: string[];
+}
+
+export interface ValidateOptions {
+  mode?: Mode;
+  fill?: FillRule;
+  convexHull?: boolean;
+}
+
+export interface ParseOptions {
+  /** Name used in messages ("NAME:LINE: ..."). */
+  name?: string;
+}
+
+export interface ParsePolyOptions extends ParseOptions {
+  /** The .node text, for a .poly whose vertex count is 0. */
+  nodeText?: string;
+}
+
+export type Ring = Float64Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]>;
+
+export interface RingsOptions {
+  /** Default 'evenodd'. */
+  fill?: FillRule;
+}
+
+export interface MemoryInfo {
+  /** Bytes of wasm memory (grows, never shrinks). */
+  heapSize: number;
+  /** Bytes currently allocated by the C++ heap. */
+  allocated: number;
+}
+
+export interface AcuteMesh {
+  readonly version: string;
+  /** The compiled module (can be posted to workers and passed to init as wasmModule). */
+  readonly wasmModule: WasmModule;
+  /** Triangle's .poly format. */
+  parsePoly(text: string, options?: ParsePolyOptions): ParsedPslg;
+  /** Triangle's .node format: a point set. */
+  parseNode(text: string, options?: ParseOptions): ParsedPslg;
+  /** acutemesh JSON: a PSLG, {"rings": ...} (fill 'evenodd') or a CG:SHOP 2025 instance. */
+  parseJson(text: string, options?: ParseOptions): ParsedPslg;
+  /** Closed rings (GeoJSON polygon coordinates, font contours) into a PSLG; a repeated last point is dropped. */
+  fromRings(rings: ReadonlyArray<Ring>, options?: RingsOptions): Pslg & { fill: FillRule };
+  /** Throws AcuteMeshError('BAD_INPUT') for bad input; a missed target is not an error (see MeshResult.status). */
+  mesh(pslg: PslgInput, options?: MeshOptions): MeshResult;
+  /** The core's exact checks of a mesh against its input (options default to the mesh's). */
+  validate(pslg: PslgInput, mesh: MeshInput, options?: ValidateOptions): Validation;
+  toNode(mesh: MeshInput): string;
+  toEle(mesh: MeshInput): string;
+  toPoly(mesh: MeshInput): string;
+  toJSON(mesh: MeshInput): string;
+  toOFF(mesh: MeshInput): string;
+  toOBJ(mesh: MeshInput): string;
+  toSVG(mesh: MeshInput): string;
+  /** The CG:SHOP 2025 solution of a mesh of `instance` (parseJson of the instance file). */
+  toCgshop(mesh: MeshInput, instance: { instanceUid?: string; points: Pslg['points'] | ArrayLike<number> }): string;
+  memory(): MemoryInfo;
+}
+
+export interface InitOptions {
+  /** Returns the URL of acutemesh.wasm (default: beside the package's JS). */
+  locateFile?: (path: string, prefix: string) => string | { readonly href: string };
+  /** The bytes of acutemesh.wasm. */
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  /** acutemesh.wasm already compiled (e.g. posted from another thread). */
+  wasmModule?: WasmModule;
+  /** Cap the wasm heap below its 2 GB, in bytes. */
+  maxMemory?: number;
+}
+
+export type ErrorCode =
+  /** Malformed input or options; the message names the item. */
+  | 'BAD_INPUT'
+  /** The heap could not grow; the instance was reset and stays usable. */
+  | 'OUT_OF_MEMORY'
+  /** An unexpected failure inside wasm; the instance was reset and stays usable. */
+  | 'INTERNAL'
+  /** A reset after a failure has not finished yet (browsers' main thread only); try again. */
+  | 'RESTARTING';
+
+export declare class AcuteMeshError extends Error {
+  constructor(code: ErrorCode, message: string);
+  readonly name: 'AcuteMeshError';
+  readonly code: ErrorCode;
+}
+
+/** Loads acutemesh once (later calls return the same promise; the first call's options apply). */
+declare function init(options?: InitOptions): Promise<AcuteMesh>;
+export default init;
+
+/** A separate instance with its own heap (not memoised). */
+export declare function createInstance(options?: InitOptions): Promise<AcuteMesh>;
