@@ -285,7 +285,7 @@ function renderStats(r) {
     ['Input', r.inputVertices.toLocaleString('en')],
     ['Min angle', r.minAngle == null ? '–' : `${truncate(r.minAngle, 2)}°`],
     ['Max angle', r.maxAngle == null ? '–' : r.certified && r.mode === 'acute' && r.maxAngle >= 89.99995
-      ? '< 90° exactly' : `${truncate(r.maxAngle, 4)}°`],
+      ? '< 90°' : `${truncate(r.maxAngle, 4)}°`],
     ['Certified', r.certified ? 'yes' : 'no'],
     ['Time', `${r.milliseconds} ms`],
   ];
