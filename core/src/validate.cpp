@@ -21,7 +21,8 @@
 #include <cstring>
 #include <limits>
 #include <memory>
-#include <sstream>
+#include <string>
+#include <type_traits>
 
 namespace acutemesh {
 namespace {
@@ -29,6 +30,28 @@ namespace {
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 constexpr size_t kMaxErrors = 20;
 constexpr double kRoundingUlps = 1024;
+
+// Message parts, formatted as an ostream would (numbers in decimal, floating point as %g), but
+// without iostreams: those pull the whole locale machinery into the WebAssembly build (about
+// a sixth of the .wasm).
+[[maybe_unused]] void append(std::string& s, const std::string& x) { s += x; }
+void append(std::string& s, const char* x) { s += x; }
+void append(std::string& s, char c) { s += c; }
+template <class T>
+std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, char> && !std::is_same_v<T, bool>>
+append(std::string& s, T v) {
+  s += std::to_string(v);
+}
+template <class T>
+std::enable_if_t<std::is_floating_point_v<T>> append(std::string& s, T v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", double(v));
+  s += buf;
+}
+struct Xy;
+struct Tri;
+void append(std::string& s, Xy q);
+void append(std::string& s, Tri t);
 
 // Collects the first kMaxErrors messages; formats nothing once full, so a badly broken mesh
 // costs no more than a good one.
@@ -42,9 +65,9 @@ class ErrorLog {
       ++dropped_;
       return;
     }
-    std::ostringstream s;
-    (s << ... << parts);
-    out_.errors.push_back(s.str());
+    std::string s;
+    (append(s, parts), ...);
+    out_.errors.push_back(std::move(s));
   }
   void finish() {
     if (dropped_ > 0) out_.errors.push_back("... and " + std::to_string(dropped_) + " more");
@@ -69,17 +92,16 @@ std::string exact(double x) {
 struct Xy {
   const double* p;
 };
-std::ostream& operator<<(std::ostream& s, Xy q) {
-  return s << '(' << exact(q.p[0]) << ", " << exact(q.p[1]) << ')';
-}
+void append(std::string& s, Xy q) { s += '(' + exact(q.p[0]) + ", " + exact(q.p[1]) + ')'; }
 
 // "triangle 17 (4,9,12)"
 struct Tri {
   size_t t;
   const uint32_t* v;
 };
-std::ostream& operator<<(std::ostream& s, Tri t) {
-  return s << "triangle " << t.t << " (" << t.v[0] << ',' << t.v[1] << ',' << t.v[2] << ')';
+void append(std::string& s, Tri t) {
+  s += "triangle " + std::to_string(t.t) + " (" + std::to_string(t.v[0]) + ',' +
+       std::to_string(t.v[1]) + ',' + std::to_string(t.v[2]) + ')';
 }
 
 bool finite(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]); }
