@@ -286,7 +286,8 @@ function renderStats(r) {
     ['Min angle', r.minAngle == null ? '–' : `${truncate(r.minAngle, 2)}°`],
     ['Max angle', r.maxAngle == null ? '–' : r.certified && r.mode === 'acute' && r.maxAngle >= 89.99995
       ? '< 90°' : `${truncate(r.maxAngle, 4)}°`],
-    ['Certified', r.certified ? 'yes' : 'no'],
+    // Certification is of acuteness / non-obtuseness: it does not apply to the other modes.
+    ['Certified', r.mode === 'acute' || r.mode === 'nonobtuse' ? (r.certified ? 'yes' : 'no') : 'n/a'],
     ['Time', `${r.milliseconds} ms`],
   ];
   ui.stats.replaceChildren(...rows.flatMap(([k, v]) => {
@@ -294,7 +295,7 @@ function renderStats(r) {
     const dd = document.createElement('dd');
     dt.textContent = k;
     dd.textContent = v;
-    if (k === 'Certified') dd.className = r.certified ? 'yes' : 'no';
+    if (k === 'Certified' && v !== 'n/a') dd.className = r.certified ? 'yes' : 'no';
     return [dt, dd];
   }));
 }
