@@ -2,7 +2,8 @@
 # Release builds:
 #  - native: the library, the CLI and the C++ tests into build/;
 #  - WebAssembly: the same CMakeLists.txt through emcmake into build-wasm/ (the Embind module
-#    and the C++ tests for node), then the npm package's dist/ (wasm/assemble.mjs).
+#    and the C++ tests for node), then the npm package's dist/ (wasm/assemble.mjs);
+#  - the web page's vendored modules into web/vendor/.
 # Each configures only when its CMakeCache.txt is missing, or when an earlier configure failed
 # before writing the build files (cmake re-runs itself when a CMakeLists.txt changes); extra
 # arguments go to the native configure, e.g.
@@ -39,3 +40,6 @@ fi
 # shellcheck disable=SC2086  # a list of target names
 cmake --build build-wasm -j"$(nproc)" --target ${ACUTEMESH_WASM_TARGETS:-wasm_acutemesh}
 node wasm/assemble.mjs build-wasm dist
+
+# The web page's third-party ES modules (opentype.js, topojson-client) into web/vendor/.
+node scripts/build-web.mjs

@@ -21,6 +21,7 @@ REQUIREMENTS=(
   "clang++:clang"                     # libFuzzer harnesses (scripts/fuzz.sh)
   "/usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a|/usr/lib/llvm-14/lib/clang/14/lib/linux/libclang_rt.fuzzer-x86_64.a:libclang-rt-14-dev"
   "emcc:emscripten"                   # the WebAssembly build (npm package)
+  "chromium:chromium"                 # the browser tests (tests/web, playwright-core)
 )
 # ---------------------------------------------------------------------------------------------
 

@@ -22,4 +22,5 @@ ctest --test-dir build-wasm --output-on-failure -j2
 node --test tests/js/
 
 # --- Browser tests (headless Chromium) -------------------------------------------------------
-# (to come: the web demo under playwright-core with Debian's chromium)
+# The web page under playwright-core with Debian's chromium; screenshots in build/web-artifacts/.
+node --test --test-concurrency=1 tests/web/

@@ -1,0 +1,328 @@
+// The web page in headless Chromium: every input kind meshes through the package's worker,
+// Cancel stops a run, downloads read back as valid meshes, and screenshots are kept in
+// build/web-artifacts/ to be looked at. Run: node --test tests/web/ (after npm run build).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { root, artifacts, startServer, launch, openPage, result, waitForRun } from './browser.mjs';
+
+// The issue's target is 1 s from navigation to the first mesh on screen. The machine running
+// the tests may be busy with other builds, so the assertion allows some slack; the measured
+// figure is printed either way.
+const FIRST_MESH_BUDGET_MS = Number(process.env.ACUTEMESH_FIRST_MESH_MS || 1500);
+
+let server, chromium, am;
+before(async () => {
+  server = await startServer();
+  chromium = await launch();
+  // The package by its own name, as a user's Node code would load it (package.json exports).
+  am = await (await import('acutemesh')).default();
+});
+after(async () => {
+  await chromium?.close();
+  server?.close();
+});
+
+const pageUrl = (query = '') => `${server.url}${query}`;
+const shot = (page, name) => page.screenshot({ path: join(artifacts, `${name}.png`) });
+
+async function open(query, options) {
+  const p = await openPage(chromium.browser, pageUrl(query), options);
+  await waitForRun(p.page, 1);
+  return p;
+}
+
+async function runAndWait(page) {
+  const before = Number(await page.getAttribute('[data-testid=stats]', 'data-runs'));
+  await page.click('[data-testid=run-button]');
+  return waitForRun(page, before + 1, 60000);
+}
+
+async function upload(page, path) {
+  await page.setInputFiles('[data-testid=file-input]', path);
+  // Choosing a file previews it; the source line names what was read.
+  await page.waitForFunction(() => /input vertices/.test(document.getElementById('source').textContent));
+}
+
+async function downloadText(page, testid) {
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.click(`[data-testid=${testid}]`)]);
+  return { name: dl.suggestedFilename(), text: readFileSync(await dl.path(), 'utf8'), path: await dl.path() };
+}
+
+// The mesh as the JSON download has it, checked by the package's exact validate() against
+// the input it was made from.
+function meshFromJson(text) {
+  const j = JSON.parse(text);
+  return {
+    points: Float64Array.from(j.vertices.flat()),
+    triangles: Uint32Array.from(j.triangles.flat()),
+    segments: Uint32Array.from((j.segments || []).flat()),
+  };
+}
+
+function assertCertifiedAcute(r, what) {
+  assert.ok(r, `${what}: no result`);
+  assert.ok(r.triangles > 0, `${what}: no triangles`);
+  assert.equal(r.certified, true, `${what}: not certified acute (${JSON.stringify(r)})`);
+  // Certification is exact; the float angle of a corner a hair below 90 may print as 90.
+  assert.ok(r.maxAngle <= 90, `${what}: max angle ${r.maxAngle}`);
+}
+
+test('the default sample ("Acute" in Pagella) meshes acute on load, without console errors', async () => {
+  const { page, errors, context } = await open('');
+  const r = await result(page);
+  assertCertifiedAcute(r, 'default');
+  for (const k of ['triangles', 'vertices', 'steiner', 'minAngle', 'maxAngle', 'certified', 'milliseconds']) {
+    assert.ok(k in r, `data-result lacks ${k}`);
+  }
+  assert.equal(r.vertices, r.inputVertices + r.steiner, 'vertices = input + Steiner');
+  await page.waitForFunction(() => document.body.dataset.firstMeshMs);
+  const firstMs = Number(await page.getAttribute('body', 'data-first-mesh-ms'));
+  console.log(`# first mesh on screen ${firstMs} ms after navigation (mesher ${r.milliseconds} ms, round trip ${r.wallMilliseconds} ms)`);
+  assert.ok(firstMs < FIRST_MESH_BUDGET_MS, `first mesh after ${firstMs} ms`);
+  // The histogram counts every angle of the mesh, three per triangle.
+  const bins = (await page.getAttribute('[data-testid=histogram]', 'data-bins')).split(',').map(Number);
+  assert.equal(bins.reduce((a, b) => a + b, 0), 3 * r.triangles);
+  assert.equal(bins.slice(45).reduce((a, b) => a + b, 0), 0, 'an acute mesh has no angle of 90 degrees or more');
+  await shot(page, 'default');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('the page is crisp at devicePixelRatio 2: the canvas has twice the CSS pixels', async () => {
+  const { page, errors, context } = await open('', { dpr: 2, width: 900, height: 600 });
+  const size = await page.$eval('[data-testid=mesh-canvas]', (c) => [c.width, c.height, c.clientWidth, c.clientHeight]);
+  assert.equal(size[0], 2 * size[2]);
+  assert.equal(size[1], 2 * size[3]);
+  await shot(page, 'default-dpr2');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('typed text meshes only when Mesh is pressed', async () => {
+  const { page, errors, context } = await open('');
+  const first = await result(page);
+  await page.fill('[data-testid=text-input]', 'Mesh 42');
+  await page.waitForTimeout(300);
+  assert.equal(await page.getAttribute('[data-testid=stats]', 'data-runs'), '1', 'editing text must not mesh');
+  const r = await runAndWait(page);
+  assertCertifiedAcute(r, 'typed text');
+  assert.notEqual(r.inputVertices, first.inputVertices);
+  assert.match(page.url(), /text=Mesh\+42/, 'the text is kept in the URL');
+  await shot(page, 'text');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('the URL carries text and options: a shared link meshes the same', async () => {
+  const { page, errors, context } = await open('?text=Hi&mode=nonobtuse');
+  const r = await result(page);
+  assert.equal(r.mode, 'nonobtuse');
+  assert.equal(r.certified, true);
+  assert.ok(r.maxAngle <= 90);
+  assert.equal(await page.inputValue('[data-testid=text-input]'), 'Hi');
+  assert.equal(await page.inputValue('[data-testid=mode-select]'), 'nonobtuse');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('an uploaded .poly meshes, and its .node/.ele and JSON downloads validate against it', async () => {
+  const { page, errors, context } = await open('');
+  const polyPath = join(root, 'tests', 'data', 'A.poly');
+  await upload(page, polyPath);
+  assert.equal(await page.getAttribute('[data-testid=stats]', 'data-runs'), '1', 'choosing a file must not mesh');
+  const r = await runAndWait(page);
+  assertCertifiedAcute(r, 'A.poly');
+  assert.equal(r.inputVertices, 29);
+  await shot(page, 'poly');
+
+  const input = am.parsePoly(readFileSync(polyPath, 'utf8'));
+  const json = await downloadText(page, 'download-json');
+  assert.equal(json.name, 'A.json');
+  const fromJson = meshFromJson(json.text);
+  assert.equal(fromJson.triangles.length / 3, r.triangles);
+  const v = am.validate(input, fromJson, { mode: 'acute' });
+  assert.ok(v.ok, `JSON download does not validate: ${JSON.stringify(v.errors)}`);
+
+  const node = await downloadText(page, 'download-node');
+  const ele = await downloadText(page, 'download-ele');
+  const points = am.parseNode(node.text).points;
+  const rows = ele.text.split('\n').filter((l) => l.trim() && !l.trim().startsWith('#'));
+  const [count, corners] = rows[0].trim().split(/\s+/).map(Number);
+  assert.equal(count, r.triangles);
+  assert.equal(corners, 3);
+  // .ele indices are 0- or 1-based like the .node's first vertex number.
+  const base = Number(node.text.split('\n').filter((l) => l.trim() && !l.trim().startsWith('#'))[1].trim().split(/\s+/)[0]);
+  const triangles = Uint32Array.from(rows.slice(1, 1 + count).flatMap((l) => l.trim().split(/\s+/).slice(1, 4).map((x) => Number(x) - base)));
+  const w = am.validate(input, { points, triangles, segments: fromJson.segments }, { mode: 'acute' });
+  assert.ok(w.ok, `.node/.ele download does not validate: ${JSON.stringify(w.errors)}`);
+
+  const poly = await downloadText(page, 'download-poly');
+  assert.equal(am.parsePoly(poly.text).points.length, points.length, '.poly download re-reads with every vertex');
+  for (const [id, pattern] of [['download-obj', /^v /m], ['download-svg', /<svg[\s>]/]]) {
+    const d = await downloadText(page, id);
+    assert.match(d.text, pattern, `${id} content`);
+  }
+  const png = await downloadText(page, 'download-png');
+  const bytes = readFileSync(png.path);
+  assert.equal(bytes.subarray(1, 4).toString(), 'PNG');
+  const canvasWidth = await page.$eval('[data-testid=mesh-canvas]', (c) => c.width);
+  assert.equal(bytes.readUInt32BE(16), canvasWidth, 'the PNG is the canvas at device resolution');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('an uploaded GeoJSON (lon/lat, with a hole) meshes, projected so shapes keep their proportions', async () => {
+  const dir = mkdtempSync(join(tmpdir(), 'acutemesh-web-'));
+  // A 1 x 1 degree cell at 60 N is about half as wide as it is tall on the ground.
+  const square = (x0, y0, d) => [[x0, y0], [x0 + d, y0], [x0 + d, y0 + d], [x0, y0 + d], [x0, y0]];
+  const geo = { type: 'FeatureCollection', features: [{ type: 'Feature', properties: {},
+    geometry: { type: 'Polygon', coordinates: [square(10, 59.5, 1), square(10.3, 59.8, 0.4).reverse()] } }] };
+  const path = join(dir, 'cell.geojson');
+  writeFileSync(path, JSON.stringify(geo));
+  const { page, errors, context } = await open('');
+  await upload(page, path);
+  const r = await runAndWait(page);
+  assertCertifiedAcute(r, 'GeoJSON');
+  assert.equal(r.inputVertices, 8);
+  const m = meshFromJson((await downloadText(page, 'download-json')).text);
+  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  for (let i = 0; i < m.points.length; i += 2) {
+    x0 = Math.min(x0, m.points[i]); x1 = Math.max(x1, m.points[i]);
+    y0 = Math.min(y0, m.points[i + 1]); y1 = Math.max(y1, m.points[i + 1]);
+  }
+  const aspect = (x1 - x0) / (y1 - y0);
+  assert.ok(Math.abs(aspect - Math.cos(Math.PI / 3)) < 0.03, `width/height ${aspect}, expected about 0.5`);
+  assert.ok(Math.abs(y1 - y0 - 111.2) < 1, `height ${y1 - y0} km, expected about 111 km`);
+  // The hole (0.4 degrees, centred, so about 22 km wide and 44 km tall about the projection's
+  // centre) stays empty: no triangle has its centroid inside it.
+  let inHole = 0;
+  for (let t = 0; t < m.triangles.length; t += 3) {
+    const [a, b, c] = [0, 1, 2].map((k) => 2 * m.triangles[t + k]);
+    const cx = (m.points[a] + m.points[b] + m.points[c]) / 3, cy = (m.points[a + 1] + m.points[b + 1] + m.points[c + 1]) / 3;
+    if (Math.abs(cx) < 10 && Math.abs(cy) < 21) inHole++;
+  }
+  assert.equal(inHole, 0, 'triangles inside the hole');
+  await shot(page, 'geojson');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a bundled map sample (Turkey, Natural Earth) meshes acute', async () => {
+  const { page, errors, context } = await open('?sample=turkey');
+  const r = await result(page);
+  assertCertifiedAcute(r, 'Turkey');
+  assert.ok(r.inputVertices > 400);
+  await shot(page, 'sample-turkey');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('an SVG meshes with its fill rule: the even-odd gear keeps its bore empty', async () => {
+  const { page, errors, context } = await open('');
+  await upload(page, join(root, 'web', 'samples', 'gear.svg'));
+  assert.match(await page.textContent('#source'), /fill-rule evenodd/);
+  const r = await runAndWait(page);
+  assertCertifiedAcute(r, 'gear.svg');
+  const m = meshFromJson((await downloadText(page, 'download-json')).text);
+  // The bore is the circle of radius 30 about (120, 120) in SVG units, y flipped: (120, -120).
+  let inBore = 0, area = 0;
+  for (let t = 0; t < m.triangles.length; t += 3) {
+    const [a, b, c] = [0, 1, 2].map((k) => 2 * m.triangles[t + k]);
+    const cx = (m.points[a] + m.points[b] + m.points[c]) / 3, cy = (m.points[a + 1] + m.points[b + 1] + m.points[c + 1]) / 3;
+    if (Math.hypot(cx - 120, cy + 120) < 29) inBore++;
+    area += ((m.points[b] - m.points[a]) * (m.points[c + 1] - m.points[a + 1]) - (m.points[c] - m.points[a]) * (m.points[b + 1] - m.points[a + 1])) / 2;
+  }
+  assert.equal(inBore, 0, 'triangles inside the bore: the even-odd rule was not applied');
+  assert.ok(area > 20000 && area < 30000, `gear area ${area}`);
+  await shot(page, 'svg');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('drawing: clicks place a ring, clicking its first vertex closes it, Mesh meshes it', async () => {
+  const { page, errors, context } = await open('');
+  await page.click('#draw');
+  const box = await page.$eval('[data-testid=mesh-canvas]', (c) => { const r = c.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; });
+  const at = (fx, fy) => page.mouse.click(box[0] + fx * box[2], box[1] + fy * box[3]);
+  for (const [x, y] of [[0.3, 0.3], [0.7, 0.25], [0.75, 0.7], [0.35, 0.75], [0.3, 0.3]]) await at(x, y);
+  for (const [x, y] of [[0.45, 0.45], [0.6, 0.45], [0.55, 0.58], [0.45, 0.45]]) await at(x, y);
+  assert.match(await page.textContent('#source'), /2 rings/);
+  assert.match(page.url(), /draw=/);
+  const r = await runAndWait(page);
+  assertCertifiedAcute(r, 'drawing');
+  assert.equal(r.inputVertices, 7);
+  await shot(page, 'drawing');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('Cancel stops a long run; the page keeps responding and meshes again afterwards', async () => {
+  const { page, errors, context } = await open('');
+  await page.selectOption('[data-testid=mode-select]', 'quality');
+  await page.fill('#maxArea', '0.02');
+  await page.fill('#maxSteiner', '100000000');
+  // Frame gaps while the worker meshes: the main thread must stay free.
+  await page.evaluate(() => {
+    window.__gaps = [];
+    let last = performance.now();
+    const tick = (t) => { window.__gaps.push(t - last); last = t; if (window.__gaps.length < 100000) requestAnimationFrame(tick); };
+    requestAnimationFrame(tick);
+  });
+  await page.click('[data-testid=run-button]');
+  await page.waitForFunction(() => !document.querySelector('[data-testid=cancel-button]').disabled);
+  await page.waitForTimeout(1500);
+  assert.equal(await page.getAttribute('[data-testid=stats]', 'data-runs'), '1', 'the long run must still be going');
+  await shot(page, 'running');
+  const gaps = await page.evaluate(() => window.__gaps.slice(2));
+  const worst = Math.max(...gaps);
+  console.log(`# while meshing: ${gaps.length} frames, longest ${worst.toFixed(1)} ms`);
+  assert.ok(worst < 100, `a frame took ${worst} ms while the worker meshed`);
+  const t0 = Date.now();
+  await page.click('[data-testid=cancel-button]');
+  await page.waitForFunction(() => /Cancelled/.test(document.getElementById('status').textContent), null, { timeout: 2000 });
+  console.log(`# cancel took effect in ${Date.now() - t0} ms`);
+  assert.equal(await page.getAttribute('[data-testid=stats]', 'data-runs'), '1', 'a cancelled run leaves no result');
+  assert.equal(await page.isDisabled('[data-testid=cancel-button]'), true);
+  await page.selectOption('[data-testid=mode-select]', 'acute');
+  await page.fill('#maxArea', '0');
+  await page.fill('#maxSteiner', '0');
+  const r = await runAndWait(page);
+  assertCertifiedAcute(r, 'after cancel');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a 100,000-triangle mesh pans and zooms smoothly', async () => {
+  // Turkey refined for quality under an area bound (km^2): about 100,000 triangles.
+  const { page, errors, context } = await open('?sample=turkey&mode=quality&maxArea=12');
+  const r = await result(page);
+  assert.ok(r.triangles >= 90000, `only ${r.triangles} triangles`);
+  await page.waitForTimeout(600);
+  const fullMs = Number(await page.getAttribute('[data-testid=mesh-canvas]', 'data-render-ms'));
+  const box = await page.$eval('[data-testid=mesh-canvas]', (c) => { const b = c.getBoundingClientRect(); return [b.left, b.top, b.width, b.height]; });
+  await page.evaluate(() => {
+    window.__gaps = [];
+    let last = performance.now();
+    const tick = (t) => { window.__gaps.push(t - last); last = t; if (!window.__stop) requestAnimationFrame(tick); };
+    requestAnimationFrame(tick);
+  });
+  const cx = box[0] + box[2] / 2, cy = box[1] + box[3] / 2;
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  for (let i = 1; i <= 30; i++) { await page.mouse.move(cx + 4 * i, cy + 2 * i); await page.waitForTimeout(16); }
+  await page.mouse.up();
+  for (let i = 0; i < 10; i++) { await page.mouse.wheel(0, -80); await page.waitForTimeout(16); }
+  const gaps = await page.evaluate(() => { window.__stop = true; return window.__gaps.slice(1); });
+  gaps.sort((a, b) => a - b);
+  const p95 = gaps[Math.floor(0.95 * (gaps.length - 1))];
+  console.log(`# ${r.triangles} triangles: full frame ${fullMs} ms; while panning/zooming ${gaps.length} frames, ` +
+    `median ${gaps[gaps.length >> 1].toFixed(1)} ms, p95 ${p95.toFixed(1)} ms, longest ${gaps[gaps.length - 1].toFixed(1)} ms`);
+  assert.ok(p95 < 50, `p95 frame ${p95} ms while panning`);
+  await page.waitForTimeout(600);
+  await shot(page, 'big-mesh-zoomed');
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -1,0 +1,463 @@
+// The page: inputs -> PSLG -> mesh in a worker -> view, histogram, stats, downloads.
+//
+// Exactly one input is "current": the one changed last (text or font, a file or sample, or the
+// drawing). Changing it shows a preview of the outline and never meshes by itself; the Mesh
+// button (or the page's first load) meshes it. Options and the current input, where it fits in
+// a link (text, sample, drawing), live in the URL so a view can be shared.
+import { loadEngine, meshInWorker, warmUp } from './engine.js';
+import { MeshView } from './view.js';
+import { analyse, CLASSES } from './angles.js';
+import { drawHistogram } from './histogram.js';
+import { DrawTool, encodeRings, decodeRings } from './draw.js';
+import { parseFont, textToRings, fontName } from './loaders/font.js';
+import { loadFile } from './loaders/index.js';
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  text: $('text'), font: $('font'), tolerance: $('tolerance'), sample: $('sample'), file: $('file'),
+  draw: $('draw'), drawClose: $('draw-close'), drawClear: $('draw-clear'), source: $('source'),
+  mode: $('mode'), maxAngle: $('maxAngle'), minAngle: $('minAngle'), maxArea: $('maxArea'),
+  maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
+  status: $('status'), stats: $('stats'), histogram: $('histogram'), legend: $('legend'),
+  view: $('view'), fit: $('fit'), showEdges: $('show-edges'), showSteiner: $('show-steiner'),
+  dropHint: $('drop-hint'),
+};
+
+const BUNDLED_FONTS = {
+  'pagella-regular': 'fonts/texgyrepagella-regular.otf',
+  'pagella-bold': 'fonts/texgyrepagella-bold.otf',
+};
+const OPTION_DEFAULTS = { mode: 'acute', maxAngle: '90', minAngle: '0', maxArea: '0', maxSteiner: '0' };
+const TEXT_DEFAULTS = { text: 'Acute', font: 'pagella-regular', tol: '5' };
+
+const view = new MeshView(ui.view);
+const draw = new DrawTool(view, (rings) => {
+  current = { type: 'draw', rings };
+  showSource(`drawing: ${rings.length} ring${rings.length === 1 ? '' : 's'}`);
+  saveUrl();
+});
+
+const fonts = new Map();      // key -> Promise<opentype Font>
+let current = { type: 'text' };  // the input the Mesh button meshes
+let lastResult = null;        // { mesh, label, key }
+let lastMeshedKey = null;     // to fit the view only when the input itself changed
+let running = null;           // AbortController of the run in progress
+let runs = 0;
+warmUp();
+const enginePromise = loadEngine();
+enginePromise.catch((e) => setStatus(`Could not load the mesher: ${e.message}`, 'error'));
+
+// ---- status and source line ---------------------------------------------------------------
+function setStatus(text, kind = '') {
+  ui.status.textContent = text;
+  ui.status.className = `status ${kind}`;
+}
+
+function showSource(text) {
+  ui.source.textContent = text;
+}
+
+// ---- fonts --------------------------------------------------------------------------------
+function getFont(key) {
+  if (!fonts.has(key)) {
+    const url = BUNDLED_FONTS[key];
+    if (!url) return Promise.reject(new Error(`unknown font ${key}`));
+    fonts.set(key, fetch(url).then((r) => {
+      if (!r.ok) throw new Error(`${url}: HTTP ${r.status}`);
+      return r.arrayBuffer();
+    }).then(parseFont));
+  }
+  return fonts.get(key);
+}
+
+let uploadedFonts = 0;
+function addFont(buffer, label) {
+  const font = parseFont(buffer);
+  const key = `upload-${++uploadedFonts}`;
+  fonts.set(key, Promise.resolve(font));
+  const opt = new Option(fontName(font, label), key);
+  ui.font.add(opt);
+  ui.font.value = key;
+  return font;
+}
+
+// ---- inputs -> meshable input ---------------------------------------------------------------
+const tolerance = () => Math.min(100, Math.max(0.1, Number(ui.tolerance.value) || 5));
+
+// Returns { rings, fill } or { pslg }, plus label and key (identity of the input's geometry).
+async function buildInput(src) {
+  switch (src.type) {
+    case 'text': {
+      const text = ui.text.value;
+      if (!text.trim()) throw new Error('type some text to mesh');
+      const font = await getFont(ui.font.value);
+      const rings = textToRings(font, text, tolerance());
+      if (!rings.length) throw new Error(`"${text}" has no outlines in this font`);
+      return { rings, fill: 'nonzero', label: slug(text), key: `text:${ui.font.value}:${text}`,
+        note: `"${text}" in ${ui.font.selectedOptions[0].text}` };
+    }
+    case 'file': case 'sample': {
+      const am = await enginePromise.catch(() => null);
+      const input = await loadFile(src.file, { am, tolerance: tolerance() });
+      if (input.kind === 'font') throw new Error('a font sets the text: type in the Text box');
+      return { ...input, key: `${src.type}:${src.file.name}:${src.file.size}:${src.file.lastModified || ''}` };
+    }
+    case 'draw':
+      if (!src.rings.length) throw new Error('draw a closed ring first (click the first vertex to close it)');
+      return { rings: src.rings, fill: 'evenodd', label: 'drawing', key: `draw:${encodeRings(src.rings)}`, note: 'drawing' };
+    default:
+      throw new Error(`unknown input ${src.type}`);
+  }
+}
+
+function slug(text) {
+  return text.trim().replace(/[^\p{L}\p{N}]+/gu, '-').replace(/^-|-$/g, '').slice(0, 40) || 'text';
+}
+
+async function preview() {
+  try {
+    const input = await buildInput(current);
+    view.setPreview(input.pslg ? { pslg: input.pslg } : { rings: input.rings, fill: input.fill });
+    if (current.type !== 'draw') draw.hide();
+    view.fit();
+    const n = input.pslg ? input.pslg.points.length / 2 : input.rings.reduce((s, r) => s + r.length, 0);
+    showSource(`${input.note || input.label}: ${n} input vertices. Press Mesh.`);
+    setStatus('');
+  } catch (e) {
+    setStatus(e.message, 'error');
+  }
+}
+
+async function takeFile(file, type = 'file') {
+  try {
+    const am = await enginePromise.catch(() => null);
+    const input = await loadFile(file, { am, tolerance: tolerance() });
+    if (input.kind === 'font') {
+      const font = addFont(input.buffer, input.label);
+      current = { type: 'text' };
+      showSource(`font ${fontName(font, input.label)} loaded`);
+    } else {
+      current = { type, file, name: type === 'sample' ? ui.sample.value : undefined };
+      if (type === 'file') ui.sample.value = '';
+    }
+    if (draw.active) toggleDraw();
+    saveUrl();
+    await preview();
+  } catch (e) {
+    setStatus(e.message, 'error');
+  }
+}
+
+async function takeSample(name) {
+  const file = name === 'gear' ? 'samples/gear.svg' : `samples/${name}.geojson`;
+  const r = await fetch(file);
+  if (!r.ok) throw new Error(`${file}: HTTP ${r.status}`);
+  const blob = await r.blob();
+  return new File([blob], file.split('/').pop());
+}
+
+// ---- options ------------------------------------------------------------------------------
+function meshOptions() {
+  const num = (el) => Number(el.value) || 0;
+  const o = { mode: ui.mode.value };
+  if (o.mode === 'acute') o.maxAngle = num(ui.maxAngle) || 90;
+  if (o.mode !== 'cdt') {
+    if (num(ui.minAngle) > 0) o.minAngle = num(ui.minAngle);
+    else if (o.mode === 'quality') o.minAngle = 20;  // the CLI's default: quality needs a bound
+    if (num(ui.maxArea) > 0) o.maxArea = num(ui.maxArea);
+    if (num(ui.maxSteiner) > 0) o.maxSteiner = Math.round(num(ui.maxSteiner));
+  }
+  return o;
+}
+
+function syncOptionInputs() {
+  const m = ui.mode.value;
+  ui.maxAngle.disabled = m !== 'acute';
+  for (const el of [ui.minAngle, ui.maxArea, ui.maxSteiner]) el.disabled = m === 'cdt';
+  // Quality with no minimum asked would do nothing worth seeing; 20 is the mesher's default.
+  ui.minAngle.placeholder = m === 'quality' ? '20' : '0';
+}
+
+// ---- running --------------------------------------------------------------------------------
+async function run() {
+  if (running) running.abort();
+  const controller = new AbortController();
+  running = controller;
+  ui.cancel.disabled = false;
+  ui.progress.hidden = false;
+  ui.progress.value = 0;
+  ui.progress.removeAttribute('value');  // indeterminate until the first report
+  setStatus('Meshing…');
+  const t0 = performance.now();
+  try {
+    const [am, input] = await Promise.all([enginePromise, buildInput(current)]);
+    const pslg = input.pslg || am.fromRings(input.rings, { fill: input.fill });
+    const options = meshOptions();
+    const m = await meshInWorker(pslg, options, {
+      signal: controller.signal,
+      // Refinement rarely knows its end (fraction -1): then the bar stays indeterminate and
+      // the growing vertex count shows that work goes on.
+      onProgress: (p) => {
+        if (running !== controller || !p) return;
+        if (p.fraction >= 0) ui.progress.value = Math.min(1, p.fraction);
+        else ui.progress.removeAttribute('value');
+        setStatus(`Meshing… ${p.phase}${p.vertices ? `, ${p.vertices.toLocaleString('en')} vertices` : ''}`);
+      },
+    });
+    if (running !== controller) return;  // a newer run took over
+    show(am, pslg, input, options, m, performance.now() - t0);
+  } catch (e) {
+    if (running !== controller) return;
+    if (controller.signal.aborted || e.name === 'AbortError') setStatus('Cancelled.', 'warn');
+    else setStatus(e.message || String(e), 'error');
+  } finally {
+    if (running === controller) {
+      running = null;
+      ui.cancel.disabled = true;
+      ui.progress.hidden = true;
+    }
+  }
+}
+
+function show(am, pslg, input, options, m, wallMs) {
+  const nInput = pslg.points.length / 2;
+  const s = m.stats || {};
+  // Colours and bars follow the exact verdict: a certified acute mesh's corners at 89.9999
+  // degrees may compute as 90 in floating point, and must not be painted as right or obtuse.
+  const bound = s.certified ? (options.mode === 'acute' ? 'acute' : options.mode === 'nonobtuse' ? 'nonobtuse' : null) : null;
+  const a = analyse(m.points, m.triangles, bound);
+  view.setMesh(m, a.cls, nInput);
+  draw.hide();
+  if (input.key !== lastMeshedKey) view.fit();
+  lastMeshedKey = input.key;
+  lastResult = { am, mesh: m, label: input.label, angles: a.angles };
+  drawHistogram(ui.histogram, a.angles);
+  const result = {
+    triangles: m.triangles.length / 3,
+    vertices: s.vertices ?? m.points.length / 2,
+    steiner: s.steiner ?? Math.max(0, m.points.length / 2 - nInput),
+    minAngle: finite(s.minAngle),
+    maxAngle: finite(s.maxAngle),
+    certified: !!s.certified,
+    milliseconds: round(Number.isFinite(s.seconds) ? s.seconds * 1000 : wallMs, 1),
+    mode: options.mode,
+    targetMet: s.targetMet ?? true,
+    inputVertices: nInput,
+    wallMilliseconds: round(wallMs, 1),
+  };
+  renderStats(result);
+  ui.stats.dataset.result = JSON.stringify(result);
+  ui.stats.dataset.runs = String(++runs);
+  for (const b of document.querySelectorAll('[data-format]')) b.disabled = false;
+  const warnings = s.warnings && s.warnings.length ? `\n${s.warnings.slice(0, 3).join('\n')}` : '';
+  const verdict = options.mode === 'acute' || options.mode === 'nonobtuse'
+    ? (result.certified ? 'certified ' + (options.mode === 'acute' ? 'acute' : 'non-obtuse') : 'NOT certified: the budget ran out (the best mesh so far is shown)')
+    : options.mode === 'quality' ? (result.targetMet ? 'quality target met' : 'quality target not met') : 'constrained Delaunay';
+  setStatus(`Done in ${Math.round(wallMs)} ms: ${verdict}.${warnings}`,
+    (options.mode === 'acute' || options.mode === 'nonobtuse') && !result.certified ? 'warn' : '');
+  // The first mesh on screen: when the frame that draws it has run.
+  if (runs === 1) {
+    requestAnimationFrame(() => {
+      document.body.dataset.firstMeshMs = performance.now().toFixed(0);
+    });
+  }
+}
+
+function finite(v) {
+  return Number.isFinite(v) ? v : null;
+}
+
+// Angles are shown truncated, not rounded: 89.99996 must not read as 90.0000.
+function truncate(v, digits) {
+  const f = 10 ** digits;
+  return (Math.trunc(v * f) / f).toFixed(digits);
+}
+
+function round(v, digits) {
+  return Number.isFinite(v) ? Number(v.toFixed(digits)) : null;
+}
+
+function renderStats(r) {
+  const rows = [
+    ['Vertices', r.vertices.toLocaleString('en')],
+    ['Triangles', r.triangles.toLocaleString('en')],
+    ['Steiner', r.steiner.toLocaleString('en')],
+    ['Input', r.inputVertices.toLocaleString('en')],
+    ['Min angle', r.minAngle == null ? '–' : `${truncate(r.minAngle, 2)}°`],
+    ['Max angle', r.maxAngle == null ? '–' : r.certified && r.mode === 'acute' && r.maxAngle >= 89.99995
+      ? '< 90°' : `${truncate(r.maxAngle, 4)}°`],
+    // Certification is of acuteness / non-obtuseness: it does not apply to the other modes.
+    ['Certified', r.mode === 'acute' || r.mode === 'nonobtuse' ? (r.certified ? 'yes' : 'no') : 'n/a'],
+    ['Time', `${r.milliseconds} ms`],
+  ];
+  ui.stats.replaceChildren(...rows.flatMap(([k, v]) => {
+    const dt = document.createElement('dt');
+    const dd = document.createElement('dd');
+    dt.textContent = k;
+    dd.textContent = v;
+    if (k === 'Certified' && v !== 'n/a') dd.className = r.certified ? 'yes' : 'no';
+    return [dt, dd];
+  }));
+}
+
+function buildLegend() {
+  const items = CLASSES.map((c) => {
+    const span = document.createElement('span');
+    const i = document.createElement('i');
+    i.style.background = c.color;
+    span.append(i, c.label);
+    return span;
+  });
+  const seg = document.createElement('span');
+  seg.className = 'mark-seg';
+  seg.append(document.createElement('i'), 'input segment');
+  const st = document.createElement('span');
+  st.className = 'mark-steiner';
+  st.append(document.createElement('i'), 'Steiner point');
+  ui.legend.replaceChildren(...items, seg, st);
+  ui.legend.title = 'Triangles are coloured by their largest angle';
+}
+
+// ---- downloads ----------------------------------------------------------------------------
+const WRITERS = {
+  node: ['toNode', 'node', 'text/plain'], ele: ['toEle', 'ele', 'text/plain'],
+  poly: ['toPoly', 'poly', 'text/plain'], obj: ['toOBJ', 'obj', 'model/obj'],
+  svg: ['toSVG', 'svg', 'image/svg+xml'], json: ['toJSON', 'json', 'application/json'],
+};
+
+function saveBlob(blob, name) {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = name;
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 10000);
+}
+
+function download(format) {
+  if (!lastResult) return;
+  const { am, mesh, label } = lastResult;
+  if (format === 'png') {
+    ui.view.toBlob((blob) => saveBlob(blob, `${label}.png`), 'image/png');
+    return;
+  }
+  const [fn, ext, type] = WRITERS[format];
+  let out = am[fn](mesh);
+  if (typeof out !== 'string') out = JSON.stringify(out);
+  saveBlob(new Blob([out], { type }), `${label}.${ext}`);
+}
+
+// ---- URL state ------------------------------------------------------------------------------
+function saveUrl() {
+  const p = new URLSearchParams();
+  for (const [k, d] of Object.entries(OPTION_DEFAULTS)) {
+    const v = ui[k].value;
+    if (v !== d && v !== '') p.set(k, v);
+  }
+  if (ui.tolerance.value !== TEXT_DEFAULTS.tol) p.set('tol', ui.tolerance.value);
+  if (current.type === 'text') {
+    if (ui.text.value !== TEXT_DEFAULTS.text) p.set('text', ui.text.value);
+    if (ui.font.value !== TEXT_DEFAULTS.font && BUNDLED_FONTS[ui.font.value]) p.set('font', ui.font.value);
+  } else if (current.type === 'sample') {
+    p.set('sample', current.name);
+  } else if (current.type === 'draw') {
+    p.set('draw', encodeRings(current.rings));
+  }
+  const q = p.toString();
+  history.replaceState(null, '', q ? `?${q}` : location.pathname);
+}
+
+function loadUrl() {
+  const p = new URLSearchParams(location.search);
+  for (const k of Object.keys(OPTION_DEFAULTS)) if (p.has(k)) ui[k].value = p.get(k);
+  if (![...ui.mode.options].some((o) => o.value === ui.mode.value)) ui.mode.value = 'acute';
+  if (p.has('tol')) ui.tolerance.value = p.get('tol');
+  if (p.has('text')) ui.text.value = p.get('text');
+  if (p.has('font') && BUNDLED_FONTS[p.get('font')]) ui.font.value = p.get('font');
+  if (p.has('sample') && [...ui.sample.options].some((o) => o.value === p.get('sample'))) {
+    return { type: 'sample', name: p.get('sample') };
+  }
+  if (p.has('draw')) {
+    const rings = decodeRings(p.get('draw'));
+    if (rings.length) return { type: 'draw', rings };
+  }
+  return { type: 'text' };
+}
+
+// ---- drawing ------------------------------------------------------------------------------
+function toggleDraw() {
+  if (draw.active) {
+    draw.stop();
+    ui.draw.setAttribute('aria-pressed', 'false');
+  } else {
+    if (current.type !== 'draw') draw.setRings([]);
+    view.clear();
+    draw.start();
+    ui.draw.setAttribute('aria-pressed', 'true');
+    current = { type: 'draw', rings: draw.rings };
+    showSource('drawing: click to place vertices, click the first one to close the ring');
+  }
+  ui.drawClose.disabled = ui.drawClear.disabled = !draw.active;
+}
+
+// ---- wiring -------------------------------------------------------------------------------
+function wire() {
+  ui.run.addEventListener('click', () => { if (draw.active) toggleDraw(); run(); });
+  ui.cancel.addEventListener('click', () => { if (running) running.abort(); });
+  const textChanged = () => { current = { type: 'text' }; ui.sample.value = ''; saveUrl(); preview(); };
+  ui.text.addEventListener('input', textChanged);
+  ui.text.addEventListener('keydown', (e) => { if (e.key === 'Enter') run(); });
+  ui.font.addEventListener('change', textChanged);
+  ui.tolerance.addEventListener('change', () => { saveUrl(); if (current.type !== 'draw') preview(); });
+  ui.file.addEventListener('change', () => { if (ui.file.files[0]) takeFile(ui.file.files[0]); ui.file.value = ''; });
+  ui.sample.addEventListener('change', async () => {
+    if (!ui.sample.value) return;
+    try { await takeFile(await takeSample(ui.sample.value), 'sample'); } catch (e) { setStatus(e.message, 'error'); }
+  });
+  for (const el of [ui.mode, ui.maxAngle, ui.minAngle, ui.maxArea, ui.maxSteiner]) {
+    el.addEventListener('change', () => { syncOptionInputs(); saveUrl(); });
+  }
+  ui.draw.addEventListener('click', toggleDraw);
+  ui.drawClose.addEventListener('click', () => draw.closeRing());
+  ui.drawClear.addEventListener('click', () => draw.clear());
+  ui.fit.addEventListener('click', () => view.fit());
+  ui.showEdges.addEventListener('change', () => { view.showEdges = ui.showEdges.checked; view.requestRender(); });
+  ui.showSteiner.addEventListener('change', () => { view.showSteiner = ui.showSteiner.checked; view.requestRender(); });
+  for (const b of document.querySelectorAll('[data-format]')) {
+    b.addEventListener('click', () => download(b.dataset.format));
+  }
+  // Drag and drop anywhere on the page.
+  let depth = 0;
+  window.addEventListener('dragenter', (e) => { e.preventDefault(); depth++; ui.dropHint.hidden = false; });
+  window.addEventListener('dragleave', () => { if (--depth <= 0) { depth = 0; ui.dropHint.hidden = true; } });
+  window.addEventListener('dragover', (e) => e.preventDefault());
+  window.addEventListener('drop', (e) => {
+    e.preventDefault();
+    depth = 0;
+    ui.dropHint.hidden = true;
+    const f = e.dataTransfer && e.dataTransfer.files[0];
+    if (f) takeFile(f);
+  });
+  window.addEventListener('resize', () => drawHistogram(ui.histogram, lastResult && lastResult.angles));
+}
+
+async function start() {
+  buildLegend();
+  drawHistogram(ui.histogram, null);
+  wire();
+  const src = loadUrl();
+  syncOptionInputs();
+  if (src.type === 'sample') {
+    ui.sample.value = src.name;
+    current = { type: 'sample', name: src.name, file: await takeSample(src.name) };
+  } else if (src.type === 'draw') {
+    draw.setRings(src.rings);
+    current = src;
+  }
+  // The page meshes its default (or the linked input) once on load, so the first thing a
+  // visitor sees is the product working.
+  await run();
+}
+
+start().catch((e) => setStatus(e.message, 'error'));

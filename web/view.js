@@ -1,0 +1,433 @@
+// The canvas view: a mesh (triangles coloured by their largest angle, edges, input segments,
+// Steiner points) or an input preview, with pan and zoom by wheel, drag, pinch and keys.
+//
+// Geometry is turned into Path2D objects once per mesh, in world coordinates, grouped in tiles
+// of a few thousand triangles (per tile one path per colour class and one of its edges); a
+// frame is then a few fill/stroke calls per visible tile under one transform. When a full frame is slow
+// (hundreds of thousands of triangles on a software rasteriser), frames during a gesture
+// redraw the last full frame as a bitmap, scaled and shifted, and the full frame follows when
+// the gesture pauses: panning stays smooth and the picture is sharp again at rest.
+import { CLASSES } from './angles.js';
+
+const SEGMENT_COLOR = '#111';
+const STEINER_COLOR = '#c2185b';
+const BG = '#ffffff';
+const SLOW_FRAME_MS = 24;   // above this, gestures use the bitmap path
+const SETTLE_MS = 140;      // pause after which a gesture counts as over
+
+export class MeshView {
+  constructor(canvas) {
+    this.canvas = canvas;
+    this.ctx = canvas.getContext('2d');
+    this.dpr = 1;
+    this.w = 1; this.h = 1;
+    this.s = 1; this.tx = 0; this.ty = 0;
+    this.mesh = null;       // { points, triangles, nInput, tiles, segments, meanEdge }
+    this.preview = null;    // { path, fill, segments, points }
+    this.showEdges = true;
+    this.showSteiner = true;
+    this.overlay = null;    // (ctx, view) => void, drawn last in CSS pixels (drawing tool)
+    this.onClick = null;    // (x, y, event) => void in world coordinates
+    this.lastFullMs = 0;
+    this.frameCount = 0;
+    this.cache = document.createElement('canvas');
+    this.cacheXform = null;
+    this.interacting = false;
+    this.settleTimer = 0;
+    this.pending = 0;
+    this.bounds = null;
+    this.pointers = new Map();
+    this.gesture = null;
+    this.#listen();
+    this.#resize();
+  }
+
+  // ---- content ------------------------------------------------------------------------
+  setMesh(m, cls, nInput) {
+    const { points: p, triangles: t } = m;
+    const tiles = buildTiles(p, t, cls);
+    let sum = 0, count = 0;
+    for (const tile of tiles) { sum += tile.edgeSum; count += tile.edgeCount; }
+    this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge: count ? sum / count : 0,
+      segments: segmentPath(p, m.segments) };
+    this.preview = null;
+    this.bounds = boundsOf(p, t);
+    this.cacheXform = null;
+    this.requestRender();
+  }
+
+  // rings + fill rule (a shape), or a PSLG (points and segments, no known inside).
+  setPreview({ rings, fill, pslg }) {
+    let path = null, segments = null, points = null;
+    if (rings) {
+      path = new Path2D();
+      for (const r of rings) {
+        path.moveTo(r[0][0], r[0][1]);
+        for (let i = 1; i < r.length; i++) path.lineTo(r[i][0], r[i][1]);
+        path.closePath();
+      }
+      points = Float64Array.from(rings.flat(2));
+    } else {
+      points = pslg.points;
+      segments = segmentPath(points, pslg.segments);
+    }
+    this.preview = { path, fill: fill === 'nonzero' ? 'nonzero' : 'evenodd', segments, points };
+    this.mesh = null;
+    this.bounds = boundsOf(points);
+    this.requestRender();
+  }
+
+  clear() {
+    this.mesh = null;
+    this.preview = null;
+    this.requestRender();
+  }
+
+  // ---- coordinates --------------------------------------------------------------------
+  toScreen(x, y) { return [x * this.s + this.tx, -y * this.s + this.ty]; }
+  toWorld(sx, sy) { return [(sx - this.tx) / this.s, (this.ty - sy) / this.s]; }
+
+  fit(bounds = this.bounds) {
+    if (!bounds || !(bounds.x1 >= bounds.x0)) return;
+    const pad = 24;
+    const bw = Math.max(bounds.x1 - bounds.x0, 1e-300), bh = Math.max(bounds.y1 - bounds.y0, 1e-300);
+    this.s = Math.min((this.w - 2 * pad) / bw, (this.h - 2 * pad) / bh);
+    if (!Number.isFinite(this.s) || this.s <= 0) this.s = 1;
+    this.tx = this.w / 2 - ((bounds.x0 + bounds.x1) / 2) * this.s;
+    this.ty = this.h / 2 + ((bounds.y0 + bounds.y1) / 2) * this.s;
+    this.requestRender();
+  }
+
+  zoomAt(sx, sy, factor) {
+    const [x, y] = this.toWorld(sx, sy);
+    this.s *= factor;
+    this.tx = sx - x * this.s;
+    this.ty = sy + y * this.s;
+    this.#gestureFrame();
+  }
+
+  panBy(dx, dy) {
+    this.tx += dx;
+    this.ty += dy;
+    this.#gestureFrame();
+  }
+
+  // ---- drawing ------------------------------------------------------------------------
+  requestRender() {
+    if (!this.pending) this.pending = requestAnimationFrame(() => { this.pending = 0; this.render(); });
+  }
+
+  render() {
+    const t0 = performance.now();
+    const fast = this.interacting && this.lastFullMs > SLOW_FRAME_MS && this.cacheXform;
+    if (fast) this.#renderCached();
+    else {
+      this.#renderFull();
+      // Canvas drawing is recorded and rasterised later, off this measurement; reading one
+      // pixel forces the raster now, so the time below is what the frame really costs.
+      this.ctx.getImageData(0, 0, 1, 1);
+      this.lastFullMs = performance.now() - t0;
+      this.canvas.dataset.renderMs = this.lastFullMs.toFixed(1);
+      if (this.lastFullMs > SLOW_FRAME_MS) this.#storeCache();
+    }
+    if (this.overlay) {
+      this.ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
+      this.overlay(this.ctx, this);
+    }
+    this.frameCount++;
+  }
+
+  #renderFull() {
+    const { ctx, dpr, s } = this;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.fillStyle = BG;
+    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    // World -> device pixels, y up.
+    ctx.setTransform(dpr * s, 0, 0, -dpr * s, dpr * this.tx, dpr * this.ty);
+    const px = 1 / s;  // one CSS pixel in world units
+    ctx.lineJoin = 'round';
+    if (this.mesh) {
+      const m = this.mesh;
+      // Only tiles that meet the window: zoomed in, most of a big mesh costs nothing.
+      const [wx0, wy1] = this.toWorld(0, 0), [wx1, wy0] = this.toWorld(this.w, this.h);
+      const visible = m.tiles.filter((b) => b.x1 >= wx0 && b.x0 <= wx1 && b.y1 >= wy0 && b.y0 <= wy1);
+      CLASSES.forEach((c, k) => {
+        ctx.fillStyle = c.color;
+        for (const tile of visible) if (tile.paths[k]) ctx.fill(tile.paths[k]);
+      });
+      const edgePx = m.meanEdge * s;
+      if (this.showEdges && edgePx > 1.5) {
+        // Fade edges in as triangles grow on screen, so a dense mesh stays readable. The
+        // colour is opaque (a blend toward the ink): translucent strokes of a huge path make
+        // the rasteriser composite the whole path as a layer, many times slower.
+        const alpha = Math.min(0.55, 0.12 + (edgePx - 1.5) * 0.05);
+        ctx.strokeStyle = mix(alpha);
+        ctx.lineWidth = 0.7 * px;
+        for (const tile of visible) ctx.stroke(tile.edges);
+      }
+      ctx.strokeStyle = SEGMENT_COLOR;
+      ctx.lineWidth = 1.6 * px;
+      ctx.stroke(m.segments);
+      if (this.showSteiner && edgePx > 3) this.#drawSteiner();
+    } else if (this.preview) {
+      const p = this.preview;
+      if (p.path) {
+        ctx.fillStyle = 'rgba(31,111,178,.12)';
+        ctx.fill(p.path, p.fill);
+        ctx.strokeStyle = SEGMENT_COLOR;
+        ctx.lineWidth = 1.4 * px;
+        ctx.stroke(p.path);
+      }
+      if (p.segments) {
+        ctx.strokeStyle = SEGMENT_COLOR;
+        ctx.lineWidth = 1.4 * px;
+        ctx.stroke(p.segments);
+      }
+      this.#drawDots(p.points, 0, SEGMENT_COLOR, 1.6);
+    }
+  }
+
+  // Steiner points are the vertices past the input's: the mesher keeps input vertex i at i.
+  #drawSteiner() {
+    this.#drawDots(this.mesh.points, this.mesh.nInput, STEINER_COLOR, 1.8);
+  }
+
+  #drawDots(points, first, color, r) {
+    const { ctx, dpr, s, tx, ty, w, h } = this;
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    const path = new Path2D();
+    let n = 0;
+    for (let i = 2 * first; i + 1 < points.length; i += 2) {
+      const x = points[i] * s + tx, y = -points[i + 1] * s + ty;
+      if (x < -r || y < -r || x > w + r || y > h + r) continue;
+      path.moveTo(x + r, y);
+      path.arc(x, y, r, 0, 2 * Math.PI);
+      if (++n > 200000) break;
+    }
+    ctx.fillStyle = color;
+    ctx.fill(path);
+  }
+
+  #storeCache() {
+    const c = this.cache;
+    if (c.width !== this.canvas.width || c.height !== this.canvas.height) {
+      c.width = this.canvas.width;
+      c.height = this.canvas.height;
+    }
+    const cctx = c.getContext('2d');
+    cctx.setTransform(1, 0, 0, 1, 0, 0);
+    cctx.drawImage(this.canvas, 0, 0);
+    this.cacheXform = { s: this.s, tx: this.tx, ty: this.ty };
+  }
+
+  #renderCached() {
+    const { ctx, dpr } = this;
+    const c = this.cacheXform, k = this.s / c.s;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.fillStyle = BG;
+    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    // screen' = k * (screen - t_cache) + t_now, in device pixels.
+    ctx.setTransform(k, 0, 0, k, dpr * (this.tx - k * c.tx), dpr * (this.ty - k * c.ty));
+    ctx.drawImage(this.cache, 0, 0);
+  }
+
+  #gestureFrame() {
+    this.interacting = true;
+    clearTimeout(this.settleTimer);
+    this.settleTimer = setTimeout(() => { this.interacting = false; this.requestRender(); }, SETTLE_MS);
+    this.requestRender();
+  }
+
+  // ---- size and input events ----------------------------------------------------------
+  #resize() {
+    const dpr = window.devicePixelRatio || 1;
+    const w = this.canvas.clientWidth || 1, h = this.canvas.clientHeight || 1;
+    // Keep the world point at the centre where it was.
+    const [cx, cy] = this.toWorld(this.w / 2, this.h / 2);
+    this.dpr = dpr; this.w = w; this.h = h;
+    this.canvas.width = Math.round(w * dpr);
+    this.canvas.height = Math.round(h * dpr);
+    this.tx = w / 2 - cx * this.s;
+    this.ty = h / 2 + cy * this.s;
+    this.cacheXform = null;
+    this.requestRender();
+  }
+
+  #listen() {
+    const cv = this.canvas;
+    new ResizeObserver(() => this.#resize()).observe(cv);
+    // A devicePixelRatio change (browser zoom, moving to another screen) does not resize the
+    // element in CSS pixels, so it needs its own listener.
+    const watchDpr = () => {
+      matchMedia(`(resolution: ${window.devicePixelRatio}dppx)`)
+        .addEventListener('change', () => { this.#resize(); watchDpr(); }, { once: true });
+    };
+    watchDpr();
+
+    cv.addEventListener('wheel', (e) => {
+      e.preventDefault();
+      const unit = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? this.h : 1;
+      const r = cv.getBoundingClientRect();
+      this.zoomAt(e.clientX - r.left, e.clientY - r.top, Math.exp(-e.deltaY * unit * 0.0015));
+    }, { passive: false });
+
+    cv.addEventListener('pointerdown', (e) => {
+      cv.setPointerCapture(e.pointerId);
+      const r = cv.getBoundingClientRect();
+      this.pointers.set(e.pointerId, { x: e.clientX - r.left, y: e.clientY - r.top });
+      this.#startGesture(e);
+    });
+    cv.addEventListener('pointermove', (e) => {
+      if (!this.pointers.has(e.pointerId)) {
+        if (this.onHover) {
+          const r = cv.getBoundingClientRect();
+          this.onHover(...this.toWorld(e.clientX - r.left, e.clientY - r.top));
+        }
+        return;
+      }
+      const r = cv.getBoundingClientRect();
+      this.pointers.set(e.pointerId, { x: e.clientX - r.left, y: e.clientY - r.top });
+      this.#moveGesture();
+      if (this.onHover) this.onHover(...this.toWorld(e.clientX - r.left, e.clientY - r.top));
+    });
+    const end = (e) => {
+      if (!this.pointers.has(e.pointerId)) return;
+      const g = this.gesture;
+      const p = this.pointers.get(e.pointerId);
+      this.pointers.delete(e.pointerId);
+      cv.classList.remove('dragging');
+      if (g && g.kind === 'pan' && !g.moved && e.type === 'pointerup' && this.onClick) {
+        this.onClick(...this.toWorld(p.x, p.y), e);
+      }
+      this.#startGesture(e);
+    };
+    cv.addEventListener('pointerup', end);
+    cv.addEventListener('pointercancel', end);
+    cv.addEventListener('dblclick', (e) => { if (!this.onClick) this.fit(); e.preventDefault(); });
+    cv.addEventListener('keydown', (e) => {
+      const step = 40;
+      const keys = {
+        ArrowLeft: () => this.panBy(step, 0), ArrowRight: () => this.panBy(-step, 0),
+        ArrowUp: () => this.panBy(0, step), ArrowDown: () => this.panBy(0, -step),
+        '+': () => this.zoomAt(this.w / 2, this.h / 2, 1.25), '=': () => this.zoomAt(this.w / 2, this.h / 2, 1.25),
+        '-': () => this.zoomAt(this.w / 2, this.h / 2, 0.8), '0': () => this.fit(),
+      };
+      if (keys[e.key]) { keys[e.key](); e.preventDefault(); }
+    });
+  }
+
+  // One pointer pans, two pinch (zoom about their midpoint, which also pans).
+  #startGesture() {
+    const pts = [...this.pointers.values()];
+    if (pts.length === 1) {
+      this.gesture = { kind: 'pan', x: pts[0].x, y: pts[0].y, x0: pts[0].x, y0: pts[0].y, moved: false };
+    } else if (pts.length >= 2) {
+      const [a, b] = pts;
+      this.gesture = { kind: 'pinch', d: Math.hypot(a.x - b.x, a.y - b.y) || 1,
+        world: this.toWorld((a.x + b.x) / 2, (a.y + b.y) / 2), s: this.s };
+    } else {
+      this.gesture = null;
+    }
+  }
+
+  #moveGesture() {
+    const g = this.gesture;
+    const pts = [...this.pointers.values()];
+    if (!g) return;
+    if (g.kind === 'pan' && pts.length === 1) {
+      const p = pts[0];
+      if (!g.moved && Math.hypot(p.x - g.x0, p.y - g.y0) < 4) return;  // still a click
+      g.moved = true;
+      this.canvas.classList.add('dragging');
+      this.panBy(p.x - g.x, p.y - g.y);
+      g.x = p.x; g.y = p.y;
+    } else if (g.kind === 'pinch' && pts.length >= 2) {
+      const [a, b] = pts;
+      const mx = (a.x + b.x) / 2, my = (a.y + b.y) / 2;
+      this.s = g.s * (Math.hypot(a.x - b.x, a.y - b.y) / g.d);
+      this.tx = mx - g.world[0] * this.s;
+      this.ty = my + g.world[1] * this.s;
+      this.#gestureFrame();
+    }
+  }
+}
+
+function boundsOf(points, triangles) {
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  const visit = (i) => {
+    const x = points[2 * i], y = points[2 * i + 1];
+    if (x < x0) x0 = x;
+    if (x > x1) x1 = x;
+    if (y < y0) y0 = y;
+    if (y > y1) y1 = y;
+  };
+  // With triangles, only vertices in use count: an unused input vertex (a duplicate, or one
+  // outside the domain) should not shrink the picture.
+  if (triangles) for (let i = 0; i < triangles.length; i++) visit(triangles[i]);
+  else for (let i = 0; 2 * i + 1 < points.length; i++) visit(i);
+  return { x0, y0, x1, y1 };
+}
+
+// A neutral grey between the triangle colours and the ink, opaque.
+function mix(alpha) {
+  const v = Math.round(255 * (1 - alpha) * 0.55 + 24 * alpha);
+  return `rgb(${v},${v + 2},${v + 6})`;
+}
+
+// Triangles bucketed by centroid into a grid of tiles of about TILE_TRIANGLES each; per tile,
+// one Path2D per colour class, one of its edges, and its bounds (for culling). Every mesh edge
+// is drawn once: half-edge a->b when a < b, and b->a when it has no twin (a boundary edge
+// walked the other way); it goes to the tile of the triangle that holds it.
+const TILE_TRIANGLES = 4000;
+
+function buildTiles(p, t, cls) {
+  const T = t.length / 3;
+  const b = boundsOf(p, t);
+  const g = Math.max(1, Math.round(Math.sqrt(T / TILE_TRIANGLES)));
+  const w = (b.x1 - b.x0) / g || 1, h = (b.y1 - b.y0) / g || 1;
+  const tiles = Array.from({ length: g * g }, () => ({
+    paths: [], edges: new Path2D(), x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity, edgeSum: 0, edgeCount: 0,
+  }));
+  const n = p.length / 2;
+  const forward = new Set();
+  for (let i = 0; i < t.length; i += 3) {
+    for (let k = 0; k < 3; k++) {
+      const a = t[i + k], c = t[i + (k + 1) % 3];
+      if (a < c) forward.add(a * n + c);
+    }
+  }
+  for (let i = 0; i < T; i++) {
+    const a = 2 * t[3 * i], bb = 2 * t[3 * i + 1], c = 2 * t[3 * i + 2];
+    const cx = (p[a] + p[bb] + p[c]) / 3, cy = (p[a + 1] + p[bb + 1] + p[c + 1]) / 3;
+    const col = Math.min(g - 1, Math.floor((cx - b.x0) / w)), row = Math.min(g - 1, Math.floor((cy - b.y0) / h));
+    const tile = tiles[row * g + col];
+    const path = tile.paths[cls[i]] || (tile.paths[cls[i]] = new Path2D());
+    path.moveTo(p[a], p[a + 1]);
+    path.lineTo(p[bb], p[bb + 1]);
+    path.lineTo(p[c], p[c + 1]);
+    path.closePath();
+    for (const v of [a, bb, c]) {
+      tile.x0 = Math.min(tile.x0, p[v]); tile.x1 = Math.max(tile.x1, p[v]);
+      tile.y0 = Math.min(tile.y0, p[v + 1]); tile.y1 = Math.max(tile.y1, p[v + 1]);
+    }
+    for (let k = 0; k < 3; k++) {
+      const u = t[3 * i + k], v = t[3 * i + (k + 1) % 3];
+      if (u > v && forward.has(v * n + u)) continue;  // drawn from its twin
+      tile.edges.moveTo(p[2 * u], p[2 * u + 1]);
+      tile.edges.lineTo(p[2 * v], p[2 * v + 1]);
+      tile.edgeSum += Math.hypot(p[2 * u] - p[2 * v], p[2 * u + 1] - p[2 * v + 1]);
+      tile.edgeCount++;
+    }
+  }
+  return tiles.filter((tile) => tile.x1 >= tile.x0);
+}
+
+function segmentPath(p, seg) {
+  const path = new Path2D();
+  if (!seg) return path;
+  for (let i = 0; i + 1 < seg.length; i += 2) {
+    path.moveTo(p[2 * seg[i]], p[2 * seg[i] + 1]);
+    path.lineTo(p[2 * seg[i + 1]], p[2 * seg[i + 1] + 1]);
+  }
+  return path;
+}
