@@ -128,7 +128,16 @@ async function preview() {
   }
 }
 
+// Files are read whole and parsed on the page before meshing; past this size a file is refused
+// with a message instead of freezing the tab (the CLI and the npm package take any size).
+export const MAX_FILE_MB = 32;
+
 async function takeFile(file, type = 'file') {
+  if (file.size > MAX_FILE_MB * 1024 * 1024) {
+    setStatus(`${file.name} is ${(file.size / 1048576).toFixed(1)} MB: files over ${MAX_FILE_MB} MB ` +
+              'are refused here (the acutemesh CLI and npm package take any size)', 'error');
+    return;
+  }
   try {
     const am = await enginePromise.catch(() => null);
     const input = await loadFile(file, { am, tolerance: tolerance() });

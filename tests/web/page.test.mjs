@@ -128,6 +128,21 @@ test('the URL carries text and options: a shared link meshes the same', async ()
   await context.close();
 });
 
+test('a file over the size limit is refused with a message; the page meshes on', async () => {
+  const { page, errors, context } = await open('');
+  const runs = await page.getAttribute('[data-testid=stats]', 'data-runs');
+  // 33 MB of a valid-looking .node header and padding: refused by size before it is read.
+  const big = Buffer.alloc(33 * 1024 * 1024, 0x20);
+  big.write('3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n');
+  await page.setInputFiles('[data-testid=file-input]', { name: 'big.node', mimeType: 'text/plain', buffer: big });
+  await page.waitForFunction(() => /over 32 MB are refused/.test(document.getElementById('status').textContent));
+  assert.equal(await page.getAttribute('[data-testid=stats]', 'data-runs'), runs, 'a refused file must not mesh');
+  const r = await runAndWait(page);  // the current input (the default text) still meshes
+  assertCertifiedAcute(r, 'after a refused file');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('an uploaded .poly meshes, and its .node/.ele and JSON downloads validate against it', async () => {
   const { page, errors, context } = await open('');
   const polyPath = join(root, 'tests', 'data', 'A.poly');
