@@ -152,6 +152,8 @@ class Refiner {
   bool tryRemove(uint32_t v);
   bool tryRemoveFromSegment(uint32_t v);
   bool tryMerge(uint32_t u, uint32_t w);
+  void markChanged();
+  std::vector<uint8_t> dirty_;  // per vertex: worth another removal / merge try
   bool holeMeetsTarget();
   void undoMoves();
   struct Moved {
@@ -949,23 +951,48 @@ bool Refiner::anyBad() const {
   return false;
 }
 
+// After a successful removal or merge: the vertices whose stars it changed (the hole's
+// corners, and the neighbours of every vertex moved to repair it) are worth another try.
+void Refiner::markChanged() {
+  if (dirty_.size() < T_.vertexCount()) dirty_.resize(T_.vertexCount(), 1);
+  for (uint32_t t : hole_) {
+    if (T_.isFree(t)) continue;
+    for (int k = 0; k < 3; ++k)
+      if (T_.tri[3 * t + k] != kGhost) dirty_[T_.tri[3 * t + k]] = 1;
+  }
+  for (const Moved& m : moved_) {
+    uint32_t e0 = T_.vertexEdge[m.vertex], e = e0;
+    if (e0 == kNone) continue;
+    do {
+      if (T_.tri[next(e)] != kGhost) dirty_[T_.tri[next(e)]] = 1;
+      e = T_.opp[prev(e)];
+    } while (e != e0);
+  }
+}
+
 void Refiner::removeSteinerPoints() {
   if (anyBad()) return;
+  // The first pass tries every Steiner point; later ones only those whose surroundings a
+  // removal has changed since their last try (the rest would fail the same way again).
+  dirty_.assign(T_.vertexCount(), 1);
   for (int pass = 0; pass < 12; ++pass) {
     uint32_t removed = 0;
     for (uint32_t v = T_.vertexCount(); v-- > 0;) {
-      if (T_.vertexEdge[v] == kNone) continue;
+      if (!dirty_[v] || T_.vertexEdge[v] == kNone) continue;
+      dirty_[v] = 0;
       if ((v & 63) == 0 && budget_.stop()) return;
-      if (role_[v] == kFree) removed += tryRemove(v);
-      else if (role_[v] == kOnSegment) removed += tryRemoveFromSegment(v);
+      bool gone = role_[v] == kFree ? tryRemove(v) : role_[v] == kOnSegment && tryRemoveFromSegment(v);
+      if (gone) ++removed, markChanged();
     }
     if (removed == 0) break;
   }
   // Then pairs of neighbouring free vertices that one point can stand in for.
-  for (int pass = 0; pass < 2; ++pass) {
+  dirty_.assign(T_.vertexCount(), 1);
+  for (int pass = 0; pass < 4; ++pass) {
     uint32_t merged = 0;
     for (uint32_t u = T_.vertexCount(); u-- > 0;) {
-      if (role_[u] != kFree || T_.vertexEdge[u] == kNone) continue;
+      if (u >= dirty_.size() || !dirty_[u] || role_[u] != kFree || T_.vertexEdge[u] == kNone) continue;
+      dirty_[u] = 0;
       if ((u & 63) == 0 && budget_.stop()) return;
       // The free neighbours first: a failed merge re-inserts u, which renumbers its edges.
       std::vector<uint32_t>& partners = ring_;
@@ -981,6 +1008,7 @@ void Refiner::removeSteinerPoints() {
         if (T_.vertexEdge[u] == kNone || T_.vertexEdge[w] == kNone || T_.findEdge(u, w) == kNone) continue;
         if (tryMerge(u, w)) {
           ++merged;
+          markChanged();
           break;
         }
       }
