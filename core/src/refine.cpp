@@ -155,6 +155,16 @@ class Refiner {
   void markChanged();
   std::vector<uint8_t> dirty_;  // per vertex: worth another removal / merge try
   bool holeMeetsTarget();
+  // Runs a removal with the store recording the triangles it writes; they become hole_.
+  template <class Removal>
+  bool recordingHole(Removal removal) {
+    touched_.clear();
+    T_.touched = &touched_;
+    bool removed = removal();
+    T_.touched = nullptr;
+    if (removed) hole_ = touched_;
+    return removed;
+  }
   void undoMoves();
   struct Moved {
     uint32_t vertex;
@@ -870,12 +880,7 @@ void Refiner::undoMoves() {
 // Delaunay triangulation is unique, so its star returns as it was up to cocircular ties,
 // which the final repair pass settles).
 bool Refiner::tryRemove(uint32_t v) {
-  touched_.clear();
-  T_.touched = &touched_;
-  bool removed = T_.removeVertex(v);
-  T_.touched = nullptr;
-  if (!removed) return false;
-  hole_ = touched_;
+  if (!recordingHole([&] { return T_.removeVertex(v); })) return false;
   if (holeMeetsTarget()) return true;
   undoMoves();
   T_.insert(v, hole_.back());  // the last triangle written is alive and next to v's place
@@ -896,12 +901,7 @@ bool Refiner::tryRemoveFromSegment(uint32_t v) {
     e = T_.opp[prev(e)];
   } while (e != e0);
   if (count != 2) return false;
-  touched_.clear();
-  T_.touched = &touched_;
-  bool removed = T_.removeFromSegment(v);
-  T_.touched = nullptr;
-  if (!removed) return false;
-  hole_ = touched_;
+  if (!recordingHole([&] { return T_.removeFromSegment(v); })) return false;
   if (holeMeetsTarget()) return true;
   undoMoves();
   uint32_t merged = T_.findEdge(ends[0], ends[1]);
