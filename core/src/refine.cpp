@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 
 #include "acutemesh/predicates.h"
 #include "build.h"
@@ -26,7 +25,8 @@ constexpr double kDegree = M_PI / 180.0;
 
 // kOnHull: on a boundary edge no segment lies on (hull of a point set); kept in place like
 // kOnSegment, reported like kFree (no input segment holds it). kArc: on the arc of a corner
-// fan (see buildCornerFans); never moved or removed.
+// fan (see buildCornerFans); never moved while refinement runs, an ordinary free Steiner point
+// in the improvement pass.
 enum VertexRole : uint8_t { kInput, kOnSegment, kOnHull, kFree, kArc };
 
 struct Corner {
