@@ -943,8 +943,7 @@ bool Refiner::tryMerge(uint32_t u, uint32_t w) {
   return false;
 }
 
-// The improvement pass (once the target is met): every free Steiner point whose removal
-// keeps every triangle on target goes, newest first, until a pass removes none.
+// Some triangle of the domain misses the target.
 bool Refiner::anyBad() const {
   for (uint32_t t = 0; t < T_.triangleSlots(); ++t)
     if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) return true;
@@ -970,6 +969,8 @@ void Refiner::markChanged() {
   }
 }
 
+// The improvement pass (once the target is met): every Steiner point whose removal keeps
+// every triangle on target goes, oldest first, until a pass removes none; then pairs merge.
 void Refiner::removeSteinerPoints() {
   if (anyBad()) return;
   // The first pass tries every Steiner point; later ones only those whose surroundings a
@@ -977,7 +978,9 @@ void Refiner::removeSteinerPoints() {
   dirty_.assign(T_.vertexCount(), 1);
   for (int pass = 0; pass < 12; ++pass) {
     uint32_t removed = 0;
-    for (uint32_t v = T_.vertexCount(); v-- > 0;) {
+    // Oldest first: the early, coarse points are the likeliest to have become redundant
+    // (fewer points than newest first: A 92 vs 97, Superior 299 vs 311).
+    for (uint32_t v = 0, count = T_.vertexCount(); v < count; ++v) {
       if (!dirty_[v] || T_.vertexEdge[v] == kNone) continue;
       dirty_[v] = 0;
       if ((v & 63) == 0 && budget_.stop()) return;
