@@ -2,6 +2,8 @@
 // or quality (every angle >= minAngle, area <= maxArea).
 //
 // A bad triangle is repaired by the rule its worst corner calls for:
+//  - a large angle: first move one of its Steiner vertices where its whole star meets the
+//    target (relocation, Erten & Ungor 2.2; along its segment for a vertex on one);
 //  - a large angle opposite a fixed edge (a subsegment): the apex lies in the subsegment's
 //    closed diametral disk, and only splitting the subsegment helps (boundary rule);
 //  - a large angle elsewhere: insert the point of slice(pq) (pq the shortest edge) farthest
@@ -9,8 +11,10 @@
 //  - a small angle or a large area: insert the circumcentre (Ruppert).
 // A Steiner point that would encroach a subsegment (lie in its closed diametral disk) or fall
 // beyond one is not inserted; the subsegment is split instead. Subsegments at an input
-// vertex are split at a power-of-two distance from it (concentric shells), so the splits
-// around a small input angle match and the triangles there come out isosceles.
+// vertex are split at a power-of-two distance from it (concentric shells); input vertices
+// with a small angle between their segments get a corner fan first (buildCornerFans).
+// Acute and non-obtuse runs then remove and merge Steiner points while the target holds
+// (removeSteinerPoints), and refine() tries a few boundary strategies, keeping the cheapest.
 #include <algorithm>
 #include <array>
 #include <cmath>
