@@ -134,6 +134,7 @@ class Refiner {
   };
   std::vector<Spoke> spokes_;
   void cutAtFeet();
+  bool splitAtFoot(uint32_t t, int k);
   void releaseChords();
   bool insertSteiner(uint32_t from, const double* x);
   uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
@@ -736,14 +737,7 @@ bool Refiner::repair(uint32_t t, Corner c) {
     }
     // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
     uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
-    if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) {
-      // Non-obtuse: the foot of the altitude from the obtuse corner cuts the triangle into two
-      // right triangles with one point.
-      const double *pc = P(T_.tri[3 * t + c.k]), *pa = P(T_.tri[opposite]), *pb = P(T_.tri[next(opposite)]);
-      double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
-      double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
-      return splitSubsegment(opposite, s);
-    }
+    if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) return splitAtFoot(t, c.k);
     if (T_.isFixed(opposite)) return splitSubsegment(opposite);
     double x[2];
     slicePoint(t, x);
@@ -761,6 +755,16 @@ double Refiner::shortestEdge2(uint32_t t) const {
   return std::min({dist2(P(v[0]), P(v[1])), dist2(P(v[1]), P(v[2])), dist2(P(v[2]), P(v[0]))});
 }
 
+// Splits the subsegment opposite corner k of t at the foot of the altitude from k: an obtuse
+// corner there leaves two right triangles (non-obtuse) with one point.
+bool Refiner::splitAtFoot(uint32_t t, int k) {
+  uint32_t opposite = 3 * t + uint32_t((k + 1) % 3);
+  const double *pc = P(T_.tri[3 * t + k]), *pa = P(T_.tri[opposite]), *pb = P(T_.tri[next(opposite)]);
+  double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
+  double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
+  return splitSubsegment(opposite, s);
+}
+
 // Non-obtuse: a triangle obtuse opposite a subsegment is cut at the foot of its altitude into
 // two right triangles. Done before the corner fans, it settles most slivers between segments
 // with one point each, and the fans go only where that is not enough.
@@ -772,10 +776,7 @@ void Refiner::cutAtFeet() {
       Corner c = worstCorner(t);
       uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
       if (c.k < 0 || !c.large || !T_.isFixed(opposite)) continue;
-      const double *pc = P(T_.tri[3 * t + c.k]), *pa = P(T_.tri[opposite]), *pb = P(T_.tri[next(opposite)]);
-      double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
-      double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
-      changed |= splitSubsegment(opposite, s);
+      changed |= splitAtFoot(t, c.k);
       if (T_.vertexCount() >= steinerLimit_) return;
     }
     if (!changed) break;
@@ -786,7 +787,7 @@ StepResult Refiner::run() {
   if (nonObtuse_ && strategy_.cutAtFeetFirst) cutAtFeet();
   if (acute_ || nonObtuse_) buildCornerFans();
   StepResult result = runSteps();
-  releaseChords();
+  releaseChords();  // runSteps releases them before improving; this covers runs cut short
   return result;
 }
 
@@ -1026,12 +1027,6 @@ void Refiner::removeSteinerPoints() {
 
 }  // namespace
 
-// Acute and non-obtuse runs try a few boundary strategies on copies of the triangulation and
-// keep the result that meets the target with the fewest Steiner points: the corner fans
-// everywhere are the safe way (they settle every small angle), fans only where needed and
-// altitude feet (non-obtuse) often need far fewer points but now and then do not finish.
-// A later strategy stops as soon as it has used as many points as the best so far, so the
-// extra runs cost little where the first is already good.
 namespace {
 
 // The strategies of refine() in turn; true if one met the target. steinerCap (0: none) bounds
