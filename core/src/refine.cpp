@@ -896,17 +896,8 @@ bool Refiner::tryRemove(uint32_t v) {
 // v goes back onto the merged piece; should even that be impossible (the piece's triangles no
 // longer hold v's place), v stays out and the final repair pass mends what that spoilt.
 bool Refiner::tryRemoveFromSegment(uint32_t v) {
-  if (fanCenter_[v] != kNone || T_.vertexEdge[v] == kNone) return false;
-  uint32_t ends[2], count = 0, e0 = T_.vertexEdge[v], e = e0;
-  do {
-    if (T_.isFixed(e)) {
-      if (count == 2) return false;
-      ends[count++] = T_.tri[next(e)];
-    }
-    e = T_.opp[prev(e)];
-  } while (e != e0);
-  if (count != 2) return false;
-  if (!recordingHole([&] { return T_.removeFromSegment(v); })) return false;
+  uint32_t ends[2];
+  if (!recordingHole([&] { return T_.removeFromSegment(v, ends); })) return false;
   if (holeMeetsTarget()) return true;
   undoMoves();
   uint32_t merged = T_.findEdge(ends[0], ends[1]);

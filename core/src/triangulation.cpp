@@ -414,7 +414,7 @@ bool Triangulation::removeVertex(uint32_t v) {
   return true;
 }
 
-bool Triangulation::removeFromSegment(uint32_t v) {
+bool Triangulation::removeFromSegment(uint32_t v, uint32_t ends[2]) {
   uint32_t e0 = vertexEdge[v];
   if (e0 == kNone) return false;
   std::vector<uint32_t> ring;  // link vertices in counter-clockwise order around v
@@ -430,6 +430,7 @@ bool Triangulation::removeFromSegment(uint32_t v) {
   // Rotate the ring to start at a: a, left side..., b, right side...
   std::rotate(ring.begin(), ring.begin() + long(fixedAt[0]), ring.end());
   const uint32_t a = ring[0], b = ring[fixedAt[1] - fixedAt[0]];
+  ends[0] = a, ends[1] = b;
   std::vector<uint32_t> stack;
   // Flip away the spokes to the link vertices strictly between a and b on each side, ears
   // first as in removeVertex, until one link vertex is left per side. Spokes v-a and v-b,

@@ -107,9 +107,10 @@ class Triangulation {
 
   // Removes a vertex v whose only fixed edges are the two pieces a-v, v-b of one segment (no
   // ghost triangle in its star): the pieces become one fixed edge a-b with their attributes,
-  // and each side keeps its `inside` flag. Returns false if the link does not allow it; v
-  // then stays, its star possibly re-flipped (still a valid triangulation).
-  bool removeFromSegment(uint32_t v);
+  // and each side keeps its `inside` flag; `ends` gets a and b once v's star qualifies. Returns
+  // false if the link does not allow it; v then stays, its star possibly re-flipped (still a
+  // valid triangulation).
+  bool removeFromSegment(uint32_t v, uint32_t ends[2]);
 
   // The half-edge leaving a with its other end at b, or kNone.
   uint32_t findEdge(uint32_t a, uint32_t b) const;
