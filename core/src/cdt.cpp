@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <deque>
+#include <initializer_list>
 
 #include "acutemesh/predicates.h"
 #include "build.h"
@@ -61,7 +62,8 @@ class SegmentInserter {
   // crosses first.
   uint32_t firstStep(uint32_t u, uint32_t v, bool* collinear) const;
   bool splitAtCrossing(const Piece& piece, uint32_t crossed);
-  uint32_t nearbyCrossing(const double* p, double scale, uint32_t t) const;
+  uint32_t nearbyCrossing(const double* p, double scale, uint32_t t,
+                          std::initializer_list<uint32_t> ends) const;
   bool flipAway(uint32_t u, uint32_t end, const Piece& piece, std::vector<uint32_t>& crossedEdges);
 
   Triangulation& T_;
@@ -109,21 +111,25 @@ uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) con
 // Three or more segments through one point meet pairwise at roundings of it a few ulps
 // apart: a crossing point that close to an earlier one (a corner of the triangle it falls
 // in) is taken to be that one, so the segments share a single vertex there. The same goes
-// for an input vertex an ulp off a segment: the crossing there is the vertex (fuzz finding
-// crossing-one-ulp-from-vertex.poly, where a rounded crossing one ulp from an input vertex
-// left two vertices no segment walk could tell apart). The rounding is
-// relative to the segments' coordinates (`scale`), not to the point's: near the origin a
-// tolerance relative to the point itself is next to zero, and 12 diameters of a circle
-// centred there cascaded into tens of thousands of crossings (star-burst-crossings.poly).
-uint32_t SegmentInserter::nearbyCrossing(const double* p, double scale, uint32_t t) const {
+// for a vertex an ulp off a segment, such as an end of one of the two crossing pieces (`ends`):
+// the crossing there is that vertex (fuzz finding crossing-one-ulp-from-vertex.poly, where a
+// rounded crossing one ulp from an input vertex left two vertices no segment walk could tell
+// apart). The rounding is relative to the segments' coordinates (`scale`), not to the
+// point's: near the origin a tolerance relative to the point itself is next to zero, and 12
+// diameters of a circle centred there cascaded into tens of thousands of crossings
+// (star-burst-crossings.poly).
+uint32_t SegmentInserter::nearbyCrossing(const double* p, double scale, uint32_t t,
+                                         std::initializer_list<uint32_t> ends) const {
   double tolerance = 16 * std::numeric_limits<double>::epsilon() *
                      std::max({scale, std::fabs(p[0]), std::fabs(p[1])});
-  for (uint32_t k = 0; k < 3; ++k) {
-    uint32_t c = T_.tri[3 * t + k];
-    if (c == kGhost) continue;
-    if (std::fabs(P(c)[0] - p[0]) <= tolerance && std::fabs(P(c)[1] - p[1]) <= tolerance)
-      return c;
-  }
+  auto near = [&](uint32_t c) {
+    return c != kGhost && std::fabs(P(c)[0] - p[0]) <= tolerance &&
+           std::fabs(P(c)[1] - p[1]) <= tolerance;
+  };
+  for (uint32_t k = 0; k < 3; ++k)  // earlier crossings (input vertices only as piece ends)
+    if (T_.tri[3 * t + k] >= inputCount_ && near(T_.tri[3 * t + k])) return T_.tri[3 * t + k];
+  for (uint32_t c : ends)
+    if (near(c)) return c;
   return kNone;
 }
 
@@ -165,13 +171,9 @@ bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
   if (loc.where == Where::Failed) return false;
   bool onCrossed = loc.where == Where::OnEdge &&
                    (loc.edge == crossed || loc.edge == T_.opp[crossed]);
-  uint32_t r = loc.where == Where::OnVertex ? loc.vertex : nearbyCrossing(p, scale, loc.tri);
-  if (r == kNone) {
-    // A crossing within rounding of an end of either piece is that end: the segments meet there.
-    double tolerance = 16 * std::numeric_limits<double>::epsilon() * scale;
-    for (uint32_t c : {piece.from, piece.to, w, x})
-      if (std::fabs(P(c)[0] - p[0]) <= tolerance && std::fabs(P(c)[1] - p[1]) <= tolerance) r = c;
-  }
+  uint32_t r = loc.where == Where::OnVertex
+                   ? loc.vertex
+                   : nearbyCrossing(p, scale, loc.tri, {piece.from, piece.to, w, x});
   if (r == kNone) r = T_.insertAt(T_.addVertex(p[0], p[1]), loc);
   if (!onCrossed && r != w && r != x) {
     // The rounded crossing point is off the fixed edge: re-route that edge through it.
