@@ -111,8 +111,9 @@ uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) con
 // Three or more segments through one point meet pairwise at roundings of it a few ulps
 // apart: a crossing point that close to an earlier one (a corner of the triangle it falls
 // in) is taken to be that one, so the segments share a single vertex there. The same goes
-// for a vertex an ulp off a segment, such as an end of one of the two crossing pieces (`ends`):
-// the crossing there is that vertex (fuzz finding crossing-one-ulp-from-vertex.poly, where a
+// for any vertex an ulp off a segment, whether a corner of that triangle (fuzz finding
+// overlap-one-ulp-off.poly) or an end of one of the two crossing pieces (`ends`): the
+// crossing there is that vertex (fuzz finding crossing-one-ulp-from-vertex.poly, where a
 // rounded crossing one ulp from an input vertex left two vertices no segment walk could tell
 // apart). The rounding is relative to the segments' coordinates (`scale`), not to the
 // point's: near the origin a tolerance relative to the point itself is next to zero, and 12
@@ -126,8 +127,8 @@ uint32_t SegmentInserter::nearbyCrossing(const double* p, double scale, uint32_t
     return c != kGhost && std::fabs(P(c)[0] - p[0]) <= tolerance &&
            std::fabs(P(c)[1] - p[1]) <= tolerance;
   };
-  for (uint32_t k = 0; k < 3; ++k)  // earlier crossings (input vertices only as piece ends)
-    if (T_.tri[3 * t + k] >= inputCount_ && near(T_.tri[3 * t + k])) return T_.tri[3 * t + k];
+  for (uint32_t k = 0; k < 3; ++k)
+    if (near(T_.tri[3 * t + k])) return T_.tri[3 * t + k];
   for (uint32_t c : ends)
     if (near(c)) return c;
   return kNone;

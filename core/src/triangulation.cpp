@@ -1,5 +1,6 @@
 #include <algorithm>
 #include "triangulation.h"
+#include "rounding.h"
 
 #include "acutemesh/predicates.h"
 
@@ -298,6 +299,15 @@ bool Triangulation::splitFixedEdge(uint32_t e, uint32_t v) {
     return x == kGhost || y == kGhost || orient2d(point(x), point(y), p) > 0;
   };
   if (!ccw(c, a) || !ccw(b, c) || !ccw(a, d) || !ccw(d, b)) return false;
+  // Nor may v come within rounding reach of another fixed edge of the two triangles: in a
+  // sliver between two segments thinner than that, v would lie on both, and no check could
+  // tell the two segments' chains apart afterwards (fuzz finding sliver-thinner-than-rounding).
+  auto nearFixed = [&](uint32_t h) {
+    return isFixed(h) && tri[h] != kGhost && tri[next(h)] != kGhost &&
+           nearSegment(point(tri[h]), point(tri[next(h)]), p);
+  };
+  if (nearFixed(next(e)) || nearFixed(prev(e)) || nearFixed(next(f)) || nearFixed(prev(f)))
+    return false;
   scratch_.clear();
   splitEdge(e, v);
   legalizeFrom(v, scratch_);

@@ -12,6 +12,7 @@
 #include <acutemesh/predicates.h>
 
 #include "build.h"
+#include "rounding.h"
 
 #include <algorithm>
 #include <array>
@@ -29,7 +30,8 @@ namespace {
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 constexpr size_t kMaxErrors = 20;
-constexpr double kRoundingUlps = 1024;
+using detail::nearLine;
+using detail::roundingReach;
 
 // Message parts, formatted as an ostream would (numbers in decimal, floating point as %g), but
 // without iostreams: those pull the whole locale machinery into the WebAssembly build (about
@@ -794,29 +796,6 @@ class Validator {
     if (end != kNone && cur != end)
       name("is not a chain of mesh edges: never reaches vertex ", end, ", which is in the mesh");
     if (cur == end && end != kNone) onSegment_[end] = s;
-  }
-
-  // Rounded constructions (segment crossings and splits) leave a Steiner point a few units in
-  // the last place off its segment. The reach allowed is kRoundingUlps ulps of the largest
-  // coordinate involved; it admits only vertices joined by listed segment edges.
-  static double roundingReach(const double* a, const double* b, const double* c) {
-    double m = 0;
-    for (const double* p : {a, b, c}) m = std::max({m, std::fabs(p[0]), std::fabs(p[1])});
-    return kRoundingUlps * std::numeric_limits<double>::epsilon() *
-           std::max(m, std::numeric_limits<double>::min());
-  }
-  // Whether the line ab passes through the square of half-side roundingReach around c (exact
-  // orientation of its corners).
-  static bool nearLine(const double* a, const double* b, const double* c) {
-    double r = roundingReach(a, b, c);
-    int below = 0, above = 0;
-    for (double dx : {-r, r})
-      for (double dy : {-r, r}) {
-        const double q[2] = {c[0] + dx, c[1] + dy};
-        double o = orient2d(a, b, q);
-        below += o<0, above += o> 0;
-      }
-    return below < 4 && above < 4;
   }
 
   const QueryGrid& boundaryGrid() {

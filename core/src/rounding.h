@@ -1,0 +1,44 @@
+// How far a rounded construction may sit off its line: the one tolerance that validate()
+// grants a segment's chain and that the refinement keeps clear of.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "acutemesh/predicates.h"
+
+namespace acutemesh::detail {
+
+// Rounded constructions (segment crossings and split points) leave a Steiner point a few
+// units in the last place off its segment. The reach allowed is kRoundingUlps ulps of the
+// largest coordinate involved.
+constexpr double kRoundingUlps = 1024;
+
+inline double roundingReach(const double* a, const double* b, const double* c) {
+  double m = 0;
+  for (const double* p : {a, b, c}) m = std::max({m, std::fabs(p[0]), std::fabs(p[1])});
+  return kRoundingUlps * std::numeric_limits<double>::epsilon() *
+         std::max(m, std::numeric_limits<double>::min());
+}
+
+// Whether the line ab passes through the square of half-side roundingReach around c (exact
+// orientation of its corners).
+inline bool nearLine(const double* a, const double* b, const double* c) {
+  double r = roundingReach(a, b, c);
+  int below = 0, above = 0;
+  for (double dx : {-r, r})
+    for (double dy : {-r, r}) {
+      const double q[2] = {c[0] + dx, c[1] + dy};
+      double o = orient2d(a, b, q);
+      below += o < 0, above += o > 0;
+    }
+  return below < 4 && above < 4;
+}
+
+// Whether c lies within rounding reach of the segment ab (its line, inside its extent).
+inline bool nearSegment(const double* a, const double* b, const double* c) {
+  return nearLine(a, b, c) && dot2d(c, a, b) <= 0;
+}
+
+}  // namespace acutemesh::detail
