@@ -277,6 +277,19 @@ if (cgshopDir && existsSync(cgshopDir)) {
   cgSections.push('Acute (`--mode acute`): solved = exit 0 and no right or obtuse triangle. The best-known counts are for ' +
     'non-obtuse triangulations (no acute reference exists); they show how far an acute mesh is from the non-obtuse optimum.', '');
   cgSections.push(...acu, '');
+  // The target is 100 ms for every instance: the spread, not only the total, tells how far off.
+  const spread = [];
+  for (const mode of ['nonobtuse', 'acute']) {
+    if (!available(mode)) continue;
+    const ts = cg.map((i) => ({ uid: i.uid, t: seconds(i[mode]) })).filter((x) => typeof x.t === 'number')
+      .sort((a, b) => a.t - b.t);
+    if (!ts.length) continue;
+    const ms = (t) => (1000 * t).toFixed(0);
+    const at = (q) => ts[Math.min(ts.length - 1, Math.floor(q * ts.length))].t;
+    spread.push(`- \`--mode ${mode}\`: median ${ms(at(0.5))} ms, 90th percentile ${ms(at(0.9))} ms, ` +
+      `max ${ms(ts[ts.length - 1].t)} ms (${ts[ts.length - 1].uid}); ${ts.filter((x) => x.t > 0.1).length} of ${ts.length} over 100 ms.`);
+  }
+  if (spread.length) cgSections.push('Time per instance (`seconds.total` from `--stats`, one run each):', '', ...spread, '');
   if (problems.length) cgSections.push('Instances not solved:', '', ...problems, '');
   if (!available('nonobtuse') || !available('acute')) {
     cgSections.push(`Modes not in this CLI yet (${['nonobtuse', 'acute'].filter((m) => !available(m)).join(', ')}): ` +
