@@ -165,7 +165,7 @@ class Refiner {
   bool tryMerge(uint32_t u, uint32_t w);
   bool tryMergeOnSegment(uint32_t u, uint32_t w);
   void mergePoint(uint32_t u, uint32_t w, double* out);
-  void clipToLinkSlabs();
+  void clipToLinkSlabs(bool wedges);
   void markChanged();
   std::vector<uint8_t> dirty_;  // per vertex: worth another removal / merge try
   bool holeMeetsTarget();
@@ -668,17 +668,13 @@ bool Refiner::slide(uint32_t a) {
   return false;
 }
 
-// Moves free vertex a (seed 2.2) to a point where every triangle of its star meets the
-// target, keeping the star's topology: the point must lie in the kernel of a's link and in
-// the slab of each link edge (angles at the link vertices below 90), outside each link edge's
-// diametral disk (angle at a below 90). The slabs and the kernel are half-planes: their
-// intersection is a convex polygon, clipped here; its centroid and points between it and the
-// corners are tried, and the first whose star passes the exact test is kept.
 // Leaves in clipPoly_ the convex region of points p for which every triangle (p, x, y) over a
-// link edge x->y of linkEdges_ is counter-clockwise with angles below 90 at x and y: p left of
-// x->y and inside its slab, (p-x).(y-x) > 0 and (p-y).(x-y) > 0. Clipped from the bounding
-// box of the edges' ends; empty if there is no such point.
-void Refiner::clipToLinkSlabs() {
+// link edge x->y of linkEdges_ is counter-clockwise with angles below the bound at x and y: p
+// left of x->y and inside its slab, (p-x).(y-x) > 0 and (p-y).(x-y) > 0 for 90 degrees; for a
+// bound below 90 the slab narrows to a wedge whose sides are x->y turned by the bound about x
+// (counter-clockwise) and about y (clockwise). Clipped from the bounding box of the edges'
+// ends; empty if there is no such point. (The angle at p is no half-plane: moveTo checks it.)
+void Refiner::clipToLinkSlabs(bool wedges) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (const auto& edge : linkEdges_)
     for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], P(edge[0])[k]), hi[k] = std::max(hi[k], P(edge[0])[k]);
@@ -698,15 +694,24 @@ void Refiner::clipToLinkSlabs() {
     }
     poly.swap(next);
   };
+  const double c = wedges ? cosMax_ : 0, s = wedges ? std::sqrt(1 - c * c) : 1;
   for (size_t i = 0; i < linkEdges_.size() && !poly.empty(); ++i) {
     const double *x = P(linkEdges_[i][0]), *y = P(linkEdges_[i][1]);
     double dx = y[0] - x[0], dy = y[1] - x[1];
-    clip(dx, dy, dx * x[0] + dy * x[1]);
-    clip(-dx, -dy, -dx * y[0] - dy * y[1]);
+    double rx = dx * c - dy * s, ry = dx * s + dy * c;    // x->y turned by the bound about x
+    clip(ry, -rx, ry * x[0] - rx * x[1]);                 // p right of that ray
+    double qx = -dx * c - dy * s, qy = dx * s - dy * c;   // y->x turned back by it about y
+    clip(-qy, qx, -qy * y[0] + qx * y[1]);                // p left of that ray
     clip(-dy, dx, -dy * x[0] + dx * x[1]);
   }
 }
 
+// Moves free vertex a (seed 2.2) to a point where every triangle of its star meets the
+// target, keeping the star's topology: the point must lie in the kernel of a's link and in
+// the slab of each link edge (angles at the link vertices below the bound), outside each link
+// edge's diametral disk (angle at a below 90). The slabs and the kernel are half-planes: their
+// intersection is a convex polygon (clipToLinkSlabs); its centroid and points between it and
+// the corners are tried, and the first whose star passes the exact test is kept.
 bool Refiner::relocate(uint32_t a) {
   if (role_[a] != kFree) return false;
   uint32_t e0 = T_.vertexEdge[a], e = e0;
@@ -719,17 +724,24 @@ bool Refiner::relocate(uint32_t a) {
   } while (e != e0);
   linkEdges_.clear();
   for (size_t i = 0; i < ring.size(); ++i) linkEdges_.push_back({ring[i], ring[(i + 1) % ring.size()]});
-  clipToLinkSlabs();
-  std::vector<std::array<double, 2>>& poly = clipPoly_;
-  if (poly.size() < 3) return false;
-  double centroid[2] = {0, 0};
-  for (const auto& p : poly) centroid[0] += p[0] / double(poly.size()), centroid[1] += p[1] / double(poly.size());
   double old[2] = {P(a)[0], P(a)[1]};
-  if (moveTo(a, centroid[0], centroid[1])) return true;
-  for (double w : {0.5, 0.25})
-    for (const auto& p : poly)
-      if (moveTo(a, centroid[0] + w * (p[0] - centroid[0]), centroid[1] + w * (p[1] - centroid[1])))
-        return true;
+  // Below 90 degrees the bound's wedges first, then the plain slabs: the angle at a is no
+  // half-plane, and the wider region's samples find places the narrower one's miss.
+  for (bool wedges : {strictMax_, false}) {
+    clipToLinkSlabs(wedges);
+    const std::vector<std::array<double, 2>>& poly = clipPoly_;
+    if (poly.size() >= 3) {
+      double centroid[2] = {0, 0};
+      for (const auto& p : poly)
+        centroid[0] += p[0] / double(poly.size()), centroid[1] += p[1] / double(poly.size());
+      if (moveTo(a, centroid[0], centroid[1])) return true;
+      for (double w : {0.5, 0.25})
+        for (const auto& p : poly)
+          if (moveTo(a, centroid[0] + w * (p[0] - centroid[0]), centroid[1] + w * (p[1] - centroid[1])))
+            return true;
+    }
+    if (!wedges) break;
+  }
   moveTo(a, old[0], old[1]);
   return false;
 }
@@ -1030,7 +1042,7 @@ void Refiner::mergePoint(uint32_t u, uint32_t w, double* out) {
       e = T_.opp[prev(e)];
     } while (e != e0);
   }
-  clipToLinkSlabs();
+  clipToLinkSlabs(strictMax_);
   if (clipPoly_.size() < 3) return;
   out[0] = out[1] = 0;
   for (const auto& p : clipPoly_)
