@@ -187,6 +187,8 @@ class Refiner {
   std::vector<Moved> moved_;
   void removeSteinerPoints();
   void mergeSteinerPoints();
+  bool improvementShouldStop();
+  uint32_t attempts_ = 0;  // removal and merge attempts so far (improvementShouldStop)
   void smooth();
   StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
@@ -1109,6 +1111,15 @@ void Refiner::markChanged() {
   }
 }
 
+// Polled once per removal or merge attempt: whether a budget has run out or the run was
+// cancelled. Now and then it reports progress (phase "improve", the vertices in the mesh).
+bool Refiner::improvementShouldStop() {
+  if ((++attempts_ & 63) != 0) return false;
+  if (options_.progress && (attempts_ & 4095) == 0)
+    options_.progress({"improve", -1, uint32_t(input_.vertexCount() + liveSteiner())});
+  return budget_.stop();
+}
+
 // Steiner points in the mesh (vertexCount() also counts those removed).
 size_t Refiner::liveSteiner() const {
   size_t n = 0;
@@ -1141,7 +1152,7 @@ void Refiner::removeSteinerPoints() {
     for (uint32_t v = 0, count = T_.vertexCount(); v < count; ++v) {
       if (!dirty_[v] || T_.vertexEdge[v] == kNone) continue;
       dirty_[v] = 0;
-      if ((v & 63) == 0 && budget_.stop()) return;
+      if (improvementShouldStop()) return;
       bool gone = role_[v] == kFree ? tryRemove(v) : role_[v] == kOnSegment && tryRemoveFromSegment(v);
       if (gone) ++removed, markChanged();
     }
@@ -1165,7 +1176,7 @@ void Refiner::mergeSteinerPoints() {
           T_.vertexEdge[u] == kNone)
         continue;
       dirty_[u] = 0;
-      if ((u & 63) == 0 && budget_.stop()) return;
+      if (improvementShouldStop()) return;
       // The partners first (free neighbours of a free vertex, the neighbours along its segment
       // of a segment vertex): a failed merge re-inserts u, which renumbers its edges.
       std::vector<uint32_t>& partners = ring_;
@@ -1235,6 +1246,10 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
     if (best.result.status == Status::Cancelled || budget.stop()) break;
   }
   if (best.met) best.refiner->polish();
+  // Cancelled while improving: the mesh meets the target, but the caller asked to stop.
+  if (budget.cancelled() && best.result.ok())
+    best.result = {Status::Cancelled, "cancelled while removing Steiner points; the mesh meets "
+                                      "the target"};
   best.refiner->markFree(freeVertex);
   bestResult = best.result;
   T = std::move(*best.T);

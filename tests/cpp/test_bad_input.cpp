@@ -469,6 +469,29 @@ TEST(BadInput, CancelFromAnotherThreadEndsWithAValidMesh) {
   expectSound(in, o, r, "cancelled");
 }
 
+// A cancel during the improvement phase (reported as "improve") stops it too: the status says
+// so, and the mesh, which already met the target, is whole.
+TEST(BadInput, CancelWhileImprovingEndsWithAValidMesh) {
+  Pslg in = randomPoints(3000, 4);
+  Options o;
+  o.mode = Mode::Acute;
+  std::atomic<bool> cancel{false};
+  o.cancel = &cancel;
+  bool improving = false;
+  o.progress = [&](const Progress& p) {
+    if (std::string(p.phase) != "improve") return;
+    improving = true;
+    EXPECT_GT(p.vertices, in.vertexCount());
+    cancel = true;
+  };
+  Result r = mesh(in, o);
+  EXPECT_TRUE(improving);
+  EXPECT_EQ(r.status, Status::Cancelled) << r.message;
+  EXPECT_TRUE(r.stats.targetMet);
+  o.progress = nullptr;
+  expectSound(in, o, r, "cancelled while improving");
+}
+
 // The automatic Steiner budget (no maxSteiner) holds too: a needle that no amount of
 // refinement makes acute stops at 50 points per input vertex, at least 20000.
 TEST(BadInput, AutomaticSteinerBudgetHolds) {

@@ -49,7 +49,7 @@ export interface ParsedPslg extends Pslg {
 }
 
 export interface Progress {
-  /** 'delaunay', 'segments', 'domain', 'refine' or 'output'. */
+  /** 'delaunay', 'segments', 'domain', 'refine', 'improve' or 'output'. */
   phase: string;
   /** 0..1 within the phase, or -1 when unknown. */
   fraction: number;

@@ -55,7 +55,7 @@ struct Pslg {
 };
 
 struct Progress {
-  const char* phase;     // "delaunay", "segments", "domain", "refine", "output"
+  const char* phase;     // "delaunay", "segments", "domain", "refine", "improve", "output"
   double fraction;       // 0..1 within the phase, or -1 when unknown
   uint32_t vertices;     // current vertex count
 };
