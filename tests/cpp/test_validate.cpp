@@ -105,6 +105,29 @@ TEST(Validate, SquareOfTwoTriangles) {
   EXPECT_VALID(in, m, withFill(FillRule::NonZero));
 }
 
+// Under EvenOdd the segments need only meet each vertex an even number of times: here one
+// inside the triangle 0-1-2 meets 2-3 twice and 3-0 six times, so integer winding numbers
+// change by 4 going round it, and only their parity is defined. The exact mesh (and every
+// refinement of it) is valid; validate() once took the changed integer for a segment crossing
+// the mesh (fuzz finding).
+TEST(Validate, EvenOddNeedsOnlyParity) {
+  Pslg in;
+  in.points = {-3.5, -3.75, -3.875, -4, -3.75, -3.625, -3.625, -3.75};
+  in.segments = {2, 3, 3, 0, 1, 0, 1, 2, 2, 3, 3, 0, 0, 2, 3, 0, 0, 2, 3, 0,
+                 2, 1, 1, 2, 3, 0, 2, 0, 0, 2, 3, 0, 2, 0};
+  Mesh m = meshOf(in, {1, 3, 2, 2, 3, 0, 0, 3, 1}, {3, 2, 2, 1, 3, 0, 0, 2, 1, 0});
+  EXPECT_VALID(in, m, withFill(FillRule::EvenOdd));
+  for (Mode mode : {Mode::Cdt, Mode::NonObtuse, Mode::Acute, Mode::Quality})
+    for (bool hull : {false, true}) {
+      Options o = withFill(FillRule::EvenOdd);
+      o.mode = mode;
+      o.convexHull = hull;
+      acutemesh::Result r = acutemesh::mesh(in, o);
+      EXPECT_NE(r.status, acutemesh::Status::BadInput) << r.message;
+      EXPECT_VALID(in, r.mesh, o);
+    }
+}
+
 TEST(Validate, SquareWithHole) {
   Pslg in = squareWithHole(false);
   Mesh m = meshOf(in, kRingTris, kRingSegs);
