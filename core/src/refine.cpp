@@ -881,19 +881,14 @@ void Refiner::polish() {
     removeSteinerPoints();
     mergeSteinerPoints();
     StepResult result = repairAll();
-    if (!result.ok() || anyBad()) {
+    size_t after = liveSteiner();
+    if (!result.ok() || anyBad() || after > before) {
       T_ = std::move(saved);
       role_ = std::move(savedRoles);
       fanCenter_.resize(role_.size(), kNone);
       return;
     }
-    if (liveSteiner() > before) {  // the repair put back more than the round took out
-      T_ = std::move(saved);
-      role_ = std::move(savedRoles);
-      fanCenter_.resize(role_.size(), kNone);
-      return;
-    }
-    if (double(before - liveSteiner()) < kPolishGain * double(before)) return;
+    if (double(before - after) < kPolishGain * double(before)) return;
   }
 }
 
