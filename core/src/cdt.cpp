@@ -13,6 +13,7 @@
 
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "rounding.h"
 
 namespace acutemesh::detail {
 namespace {
@@ -118,20 +119,25 @@ uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) con
 // apart). The rounding is relative to the segments' coordinates (`scale`), not to the
 // point's: near the origin a tolerance relative to the point itself is next to zero, and 12
 // diameters of a circle centred there cascaded into tens of thousands of crossings
-// (star-burst-crossings.poly).
+// (star-burst-crossings.poly). Two pieces that nearly overlap cross at a point their
+// rounding leaves far off (the error grows as the angle between them shrinks): a crossing
+// within the rounding reach validate() grants a chain (kRoundingUlps) of a piece end is that
+// end, the nearest if several (fuzz finding overlap-twenty-ulps-off.poly, a crossing 20 ulps
+// from an end).
 uint32_t SegmentInserter::nearbyCrossing(const double* p, double scale, uint32_t t,
                                          std::initializer_list<uint32_t> ends) const {
-  double tolerance = 16 * std::numeric_limits<double>::epsilon() *
-                     std::max({scale, std::fabs(p[0]), std::fabs(p[1])});
-  auto near = [&](uint32_t c) {
-    return c != kGhost && std::fabs(P(c)[0] - p[0]) <= tolerance &&
-           std::fabs(P(c)[1] - p[1]) <= tolerance;
+  double unit = std::numeric_limits<double>::epsilon() *
+                std::max({scale, std::fabs(p[0]), std::fabs(p[1])});
+  auto distance = [&](uint32_t c) {
+    return c == kGhost ? INFINITY : std::max(std::fabs(P(c)[0] - p[0]), std::fabs(P(c)[1] - p[1]));
   };
   for (uint32_t k = 0; k < 3; ++k)
-    if (near(T_.tri[3 * t + k])) return T_.tri[3 * t + k];
+    if (distance(T_.tri[3 * t + k]) <= 16 * unit) return T_.tri[3 * t + k];
+  uint32_t nearest = kNone;
   for (uint32_t c : ends)
-    if (near(c)) return c;
-  return kNone;
+    if (distance(c) <= kRoundingUlps * unit && (nearest == kNone || distance(c) < distance(nearest)))
+      nearest = c;
+  return nearest;
 }
 
 // The segment piece crosses the fixed edge `crossed`: add a vertex at the crossing and route
