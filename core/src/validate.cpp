@@ -765,13 +765,18 @@ class Validator {
     while (cur != kNone && cur != end) {
       onSegment_[cur] = s;
       uint32_t exact = kNone, exactHe = kNone, past = kNone, near = kNone, nearHe = kNone;
+      // An edge runs past b only from a vertex exactly on the segment: from a rounded one
+      // (entered a rounding off the line) it does not lie along the segment to begin with
+      // (fuzz finding boundary-edge-along-segment-past-its-end.poly).
+      bool curOn = orient2d(A, B, P(cur)) == 0;
       forEachEdge(cur, [&](uint32_t c, uint32_t h) {
         bool on = orient2d(A, B, P(c)) == 0;
         if (on && key(P(c)) > key(P(cur))) {
-          if (key(P(c)) > key(B))
-            past = c;
-          else if (exact == kNone)
+          if (key(P(c)) > key(B)) {
+            if (curOn) past = c;
+          } else if (exact == kNone) {
             exact = c, exactHe = h;
+          }
         } else if (listed_[canon(h)] && onSegment_[c] != s && key(P(c)) <= key(B) &&
                    (near == kNone || key(P(c)) > key(P(near))) && (on || nearLine(A, B, P(c)))) {
           near = c, nearHe = h;  // the most advanced, if several

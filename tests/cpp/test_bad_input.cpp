@@ -66,6 +66,7 @@ const Case kCases[] = {
     {"all-points-equal.node", kMeshError, 0, "all 6 input vertices coincide"},
     {"attribute-count-far-larger.node", kMesh, 1, nullptr},
     {"bare-word.json", kReadError, 0, "bare-word.json:1: expected an x coordinate (a number), found 'one'"},
+    {"boundary-edge-along-segment-past-its-end.poly", kMesh, 2, nullptr},
     {"boundary-index-out-of-range.json", kReadError, 0, "boundary-index-out-of-range.json:1: expected a vertex index in \"region_boundary\" below 3, "},
     {"boundary-too-short.json", kReadError, 0, "boundary-too-short.json:1: expected at least 3 indices in \"region_boundary\", found 2"},
     {"bow-tie.poly", kMesh, 2, nullptr},

@@ -351,6 +351,17 @@ TEST(Validate, SegmentNotInMesh) {
                "input segment 4 (0->2) is not a chain of mesh edges: stops at vertex 0");
 }
 
+// A segment ending in the middle of a boundary edge that has no vertex there: from corner 0,
+// exactly on the segment, the edge 0-1 (to (2,0)) runs past the segment's end (1,0).
+TEST(Validate, EdgeRunningPastASegmentEnd) {
+  Pslg in = square();
+  in.points.insert(in.points.end(), {1, 0});
+  in.segments.insert(in.segments.end(), {0, 4});
+  Mesh m = meshOf(in, kSquareTris, kSquareSegs);
+  EXPECT_ERROR(in, m, Options{},
+               "input segment 4 (0->4) is not a chain of mesh edges: mesh edge 0-1 runs past 4");
+}
+
 TEST(Validate, TriangleInHole) {
   Pslg in = squareWithHole(false);
   std::vector<uint32_t> tris = kRingTris;
