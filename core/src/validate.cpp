@@ -782,6 +782,11 @@ class Validator {
           near = c, nearHe = h;  // the most advanced, if several
         }
       });
+      // A near step that does not advance (roundings out of order) is for a chain that would
+      // otherwise be stuck inside the mesh: where the segment leaves the mesh at cur, it leaves
+      // (fuzz finding overlap-sideways-step.poly: a listed edge an ulp long beside the start).
+      if (near != kNone && key(P(near)) <= key(P(cur)) && triangleToward(cur, B) == kNone)
+        near = kNone;
       if (exact == kNone) exact = near, exactHe = nearHe;
       if (exact != kNone) {
         uint32_t e = canon(exactHe);

@@ -131,6 +131,7 @@ const Case kCases[] = {
     {"overflowing-coordinate.poly", kReadError, 0, "overflowing-coordinate.poly:3: expected x coordinate within double range, found '1e400'"},
     {"overflowing-hole.poly", kReadError, 0, "overflowing-hole.poly:12: expected hole y coordinate within double range, found '-2e308'"},
     {"overlap-one-ulp-off.poly", kMesh, 11, nullptr},
+    {"overlap-sideways-step.poly", kMesh, 2, nullptr},
     {"overlap-twenty-ulps-off.poly", kMesh, 6, nullptr},
     {"overlapping-segments.poly", kMesh, 5, nullptr},
     {"pentagram-rings.json", kMesh, 5, nullptr},
@@ -317,6 +318,28 @@ TEST(BadInput, CorpusFilesMeetTheirExpectations) {
       }
       if (HasFailure()) return;
     }
+  }
+}
+
+// Segments a rounding apart (the fuzzers' favourite): every fill rule, with and without the
+// convex hull, gives a mesh validate() accepts (the corpus test above uses one setting each).
+TEST(BadInput, NearlyOverlappingSegmentsUnderEveryFill) {
+  for (const char* file : {"overlap-one-ulp-off.poly", "overlap-twenty-ulps-off.poly",
+                           "overlap-sideways-step.poly", "sliver-thinner-than-rounding.poly",
+                           "boundary-edge-along-segment-past-its-end.poly"}) {
+    Input in = fixtures::load(kBad + "/" + file);
+    for (FillRule fill : {FillRule::Triangle, FillRule::EvenOdd, FillRule::NonZero})
+      for (bool hull : {false, true})
+        for (Mode mode : {Mode::Cdt, Mode::NonObtuse, Mode::Acute}) {
+          Options o;
+          o.mode = mode;
+          o.fill = fill;
+          o.convexHull = hull;
+          o.maxSteiner = 300;
+          Result r = mesh(in.pslg, o);
+          expectSound(in.pslg, o, r, std::string(file) + " fill " + std::to_string(int(fill)) +
+                                         (hull ? " hull " : " ") + modeName(mode));
+        }
   }
 }
 
