@@ -771,7 +771,7 @@ class Validator {
       bool curOn = orient2d(A, B, P(cur)) == 0;
       forEachEdge(cur, [&](uint32_t c, uint32_t h) {
         bool on = orient2d(A, B, P(c)) == 0;
-        if (on && key(P(c)) > key(P(cur))) {
+        if (on && key(P(c)) > key(P(cur)) && onSegment_[c] != s) {  // never back: overlap-back-step.poly
           if (key(P(c)) > key(B)) {
             if (curOn) past = c;
           } else if (exact == kNone) {

@@ -130,6 +130,7 @@ const Case kCases[] = {
     {"overflowing-coordinate.json", kReadError, 0, "overflowing-coordinate.json:1: expected an x coordinate within double range, found '1e999'"},
     {"overflowing-coordinate.poly", kReadError, 0, "overflowing-coordinate.poly:3: expected x coordinate within double range, found '1e400'"},
     {"overflowing-hole.poly", kReadError, 0, "overflowing-hole.poly:12: expected hole y coordinate within double range, found '-2e308'"},
+    {"overlap-back-step.poly", kMesh, 8, nullptr},
     {"overlap-one-ulp-off.poly", kMesh, 11, nullptr},
     {"overlap-sideways-step.poly", kMesh, 2, nullptr},
     {"overlap-twenty-ulps-off.poly", kMesh, 6, nullptr},
