@@ -122,8 +122,10 @@ uint32_t SegmentInserter::firstStep(uint32_t u, uint32_t v, bool* collinear) con
 // (star-burst-crossings.poly). Two pieces that nearly overlap cross at a point their
 // rounding leaves far off (the error grows as the angle between them shrinks): a crossing
 // within the rounding reach validate() grants a chain (kRoundingUlps) of a piece end is that
-// end, the nearest if several (fuzz finding overlap-twenty-ulps-off.poly, a crossing 20 ulps
-// from an end).
+// end (fuzz finding overlap-twenty-ulps-off.poly, a crossing 20 ulps from an end); of several,
+// the first in `ends`: the crossed edge's ends before the new piece's, so the piece bends
+// through the edge's end rather than the edge detouring through the piece's end
+// (the other way round, or the nearest, broke tests/fuzz/findings' overlap neighbours).
 uint32_t SegmentInserter::nearbyCrossing(const double* p, double scale, uint32_t t,
                                          std::initializer_list<uint32_t> ends) const {
   double unit = std::numeric_limits<double>::epsilon() *
@@ -133,11 +135,9 @@ uint32_t SegmentInserter::nearbyCrossing(const double* p, double scale, uint32_t
   };
   for (uint32_t k = 0; k < 3; ++k)
     if (distance(T_.tri[3 * t + k]) <= 16 * unit) return T_.tri[3 * t + k];
-  uint32_t nearest = kNone;
   for (uint32_t c : ends)
-    if (distance(c) <= kRoundingUlps * unit && (nearest == kNone || distance(c) < distance(nearest)))
-      nearest = c;
-  return nearest;
+    if (distance(c) <= kRoundingUlps * unit) return c;
+  return kNone;
 }
 
 // The segment piece crosses the fixed edge `crossed`: add a vertex at the crossing and route
@@ -180,7 +180,7 @@ bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
                    (loc.edge == crossed || loc.edge == T_.opp[crossed]);
   uint32_t r = loc.where == Where::OnVertex
                    ? loc.vertex
-                   : nearbyCrossing(p, scale, loc.tri, {piece.from, piece.to, w, x});
+                   : nearbyCrossing(p, scale, loc.tri, {w, x, piece.from, piece.to});
   if (r == kNone) r = T_.insertAt(T_.addVertex(p[0], p[1]), loc);
   if (!onCrossed && r != w && r != x) {
     // The rounded crossing point is off the fixed edge: re-route that edge through it.
