@@ -55,6 +55,18 @@ void circumcenter(const double* a, const double* b, const double* c, double* out
   out[1] = a[1] + (bx * c2 - cx * b2) / d;
 }
 
+// The WebAssembly build must make the very meshes the native one makes, and the two link
+// different maths libraries: hypot, pow, exp2 and log2 need not round alike there (only +, -,
+// *, / and sqrt are exact IEEE operations). So constructions use those alone, save the corner
+// fans' directions and arc points (atan2, cos, sin): a gap the wasm/native test has not hit.
+// The power of two nearest x > 0 in the log scale: round(log2 x), from x's exponent and
+// whether its mantissa m (x = m 2^e, 0.5 <= m < 1) is at least sqrt(1/2).
+double powerOfTwoNear(double x) {
+  int e = 0;
+  double m = std::frexp(x, &e);
+  return std::ldexp(1.0, m >= M_SQRT1_2 ? e : e - 1);
+}
+
 // How a run goes about the boundary. No one way wins everywhere (see refine()).
 struct Strategy {
   bool cutAtFeetFirst = false;  // non-obtuse: cut slivers at altitude feet before the fans
@@ -93,12 +105,14 @@ class Refiner {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < input.points.size(); ++i)
       lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
-    double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    double dx = hi[0] - lo[0], dy = hi[1] - lo[1];
+    double diagonal = std::sqrt(dx * dx + dy * dy);  // not hypot: see powerOfTwoNear
     // Far from the origin (an input moved by 1e15) the coordinates' own resolution is coarse:
     // no edge shorter than 2^10 ulps of the largest coordinate, or split points round off
     // their segments by a visible fraction of the edge.
     double largest = std::max({-lo[0], -lo[1], hi[0], hi[1], 0.0});
-    minEdge2_ = std::pow(std::max(diagonal * std::ldexp(1.0, -24), largest * std::ldexp(1.0, -42)), 2);
+    double minEdge = std::max(diagonal * std::ldexp(1.0, -24), largest * std::ldexp(1.0, -42));
+    minEdge2_ = minEdge * minEdge;
     // Where the domain ends at an edge no segment lies on (point sets, --convex-hull), the
     // edge is a boundary all the same: fix it (with no segment) so the boundary rule applies.
     for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e)
@@ -274,7 +288,7 @@ bool Refiner::splitSubsegment(uint32_t e, double preferred) {
   if (dist2(pa, pb) < 4 * minEdge2_) return false;
   double len = std::sqrt(dist2(pa, pb)), s = 0.5;
   if ((role_[a] == kInput) != (role_[b] == kInput)) {
-    double shell = std::exp2(std::round(std::log2(len / 2)));
+    double shell = powerOfTwoNear(len / 2);
     s = role_[a] == kInput ? shell / len : 1 - shell / len;
   }
   if (preferred > 0.01 && preferred < 0.99) s = preferred;
@@ -301,7 +315,7 @@ bool Refiner::splitChord(uint32_t e) {
   if (dist2(pa, pb) < 4 * minEdge2_) return false;
   double ra = std::sqrt(dist2(pa, pc)), rb = std::sqrt(dist2(pb, pc));
   double ux = (pa[0] - pc[0]) / ra + (pb[0] - pc[0]) / rb, uy = (pa[1] - pc[1]) / ra + (pb[1] - pc[1]) / rb;
-  double scale = fanRadius_[c] / std::hypot(ux, uy);
+  double scale = fanRadius_[c] / std::sqrt(ux * ux + uy * uy);
   double m[2] = {pc[0] + ux * scale, pc[1] + uy * scale};
   if (!std::isfinite(m[0]) || !std::isfinite(m[1])) return false;
   uint32_t v = addVertex(m, kArc, c);
