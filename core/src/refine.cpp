@@ -180,6 +180,7 @@ class Refiner {
   bool tryMergeOnSegment(uint32_t u, uint32_t w);
   void mergePoint(uint32_t u, uint32_t w, double* out);
   void clipToLinkSlabs(bool wedges);
+  bool clipCentroid(double* out) const;
   void markChanged();
   std::vector<uint8_t> dirty_;  // per vertex: worth another removal / merge try
   bool holeMeetsTarget();
@@ -728,6 +729,15 @@ void Refiner::clipToLinkSlabs(bool wedges) {
   }
 }
 
+// The mean of clipPoly_'s corners (inside it, being convex), if it is a region at all.
+bool Refiner::clipCentroid(double* out) const {
+  if (clipPoly_.size() < 3) return false;
+  out[0] = out[1] = 0;
+  for (const auto& p : clipPoly_)
+    out[0] += p[0] / double(clipPoly_.size()), out[1] += p[1] / double(clipPoly_.size());
+  return true;
+}
+
 // Moves free vertex a (seed 2.2) to a point where every triangle of its star meets the
 // target, keeping the star's topology: the point must lie in the kernel of a's link and in
 // the slab of each link edge (angles at the link vertices below the bound), outside each link
@@ -752,10 +762,8 @@ bool Refiner::relocate(uint32_t a) {
   for (bool wedges : {strictMax_, false}) {
     clipToLinkSlabs(wedges);
     const std::vector<std::array<double, 2>>& poly = clipPoly_;
-    if (poly.size() >= 3) {
-      double centroid[2] = {0, 0};
-      for (const auto& p : poly)
-        centroid[0] += p[0] / double(poly.size()), centroid[1] += p[1] / double(poly.size());
+    double centroid[2];
+    if (clipCentroid(centroid)) {
       if (moveTo(a, centroid[0], centroid[1])) return true;
       for (double w : {0.5, 0.25})
         for (const auto& p : poly)
@@ -1060,10 +1068,8 @@ void Refiner::mergePoint(uint32_t u, uint32_t w, double* out) {
     } while (e != e0);
   }
   clipToLinkSlabs(strictMax_);
-  if (clipPoly_.size() < 3) return;
-  out[0] = out[1] = 0;
-  for (const auto& p : clipPoly_)
-    out[0] += p[0] / double(clipPoly_.size()), out[1] += p[1] / double(clipPoly_.size());
+  double centre[2];
+  if (clipCentroid(centre)) out[0] = centre[0], out[1] = centre[1];
 }
 
 // Replaces two neighbouring free vertices u, w by one (at mergePoint) if the triangles around
@@ -1218,10 +1224,6 @@ void Refiner::mergeSteinerPoints() {
     if (merged == 0) break;
   }
 }
-
-}  // namespace
-
-namespace {
 
 // The strategies of refine() in turn, then polish() on the one that met the target with the
 // fewest Steiner points; true if one met the target. steinerCap (0: none) bounds each run's
