@@ -313,6 +313,32 @@ std::vector<int64_t> windingNumbers(const Pslg& in, const std::vector<std::array
   return winding;
 }
 
+// The winding number inside triangle (v, c1, c2) where no double lies strictly inside it (a
+// sliver an ulp high): at v + e (c1 - v) + e^2 (c2 - v) for an infinitesimal e > 0, a point
+// strictly inside. Every test on it is decided by exact tests on v, c1 and c2 in turn (the
+// first that is not zero), so no coordinate of it is ever formed.
+int64_t windingNumberInside(const Pslg& in, const double* v, const double* c1, const double* c2) {
+  auto P = [&](uint32_t i) { return &in.points[2 * size_t(i)]; };
+  auto sign = [](double x) { return (x > 0) - (x < 0); };
+  auto aboveY = [&](double y) {  // sign of p.y - y
+    if (int s = sign(v[1] - y)) return s;
+    if (int s = sign(c1[1] - v[1])) return s;
+    return sign(c2[1] - v[1]);
+  };
+  auto orient = [&](const double* a, const double* b) {  // sign of orient2d(a, b, p)
+    if (int s = sign(orient2d(a, b, v))) return s;
+    if (int s = sign(orient2d(a, b, c1))) return s;
+    return sign(orient2d(a, b, c2));
+  };
+  int64_t winding = 0;
+  for (uint32_t s = 0; s < in.segmentCount(); ++s) {
+    const double *a = P(in.segments[2 * s]), *b = P(in.segments[2 * s + 1]);
+    if (a[1] < b[1] && aboveY(a[1]) >= 0 && aboveY(b[1]) < 0 && orient(a, b) > 0) ++winding;
+    if (a[1] > b[1] && aboveY(b[1]) >= 0 && aboveY(a[1]) < 0 && orient(a, b) < 0) --winding;
+  }
+  return winding;
+}
+
 // Vertices on the boundary of the convex hull of the distinct points, counter-clockwise,
 // including those in the middle of a hull edge. Among equal points the used one is taken.
 std::vector<uint32_t> convexHull(const std::vector<double>& xy, const std::vector<uint8_t>& used) {
@@ -396,7 +422,9 @@ class Validator {
     listed_.assign(3 * size_t(T_), 0);
     if (opt_.mode != Mode::Delaunay) {
       readMeshSegments();
+      chains_.assign(in_.segmentCount(), {});
       for (uint32_t s = 0; s < in_.segmentCount(); ++s) walkSegment(s);
+      rerouteToListedEdges();
       checkMeshSegments();
     }
     checkKinds();
@@ -724,88 +752,365 @@ class Validator {
   // no step continues, the segment must leave the meshed domain there (no
   // triangle of the vertex covers the direction toward b) and may re-enter only at a boundary
   // vertex on it (within rounding reach).
+  // Segments a rounding apart can make two chains side by side, and the first step that
+  // looks best may lead into the wrong one (fuzz finding parallel-chains-one-ulp-apart): the
+  // walk is depth first, trying the other steps from a vertex when one leads to a dead end.
+  // Only if no walk gets through is the segment reported, along the walk of first choices.
   void walkSegment(uint32_t s) {
     uint32_t a = in_.segments[2 * s], b = in_.segments[2 * s + 1];
     const double *A = inP(a), *B = inP(b);
     if (A[0] == B[0] && A[1] == B[1]) return;
-    // Position along the segment: the coordinate on its dominant axis, signed to grow toward b.
-    int axis = std::fabs(B[0] - A[0]) >= std::fabs(B[1] - A[1]) ? 0 : 1;
-    double dir = B[axis] > A[axis] ? 1 : -1;
-    auto key = [&](const double* p) { return dir * p[axis]; };
-    auto name = [&](auto&&... parts) {
-      log_.add("input segment ", s, " (", a, "->", b, ") ", parts...);
-    };
+    SegmentWalk walk{s, a, b, A, B};
+    walk.leaveAnywhere = false;
+    if (walkDepthFirst(walk, true)) return;
+    walk.leaveAnywhere = true;
+    if (walkDepthFirst(walk, true)) return;
+    walk.leaveAnywhere = false;
+    walkDepthFirst(walk, false);
+  }
 
+  // A walk along input segment s (a->b): see walkSegment.
+  struct SegmentWalk {
+    uint32_t s, a, b;
+    const double *A, *B;
+    int axis = 0;
+    double dir = 1;
     std::vector<uint32_t> entries;  // boundary vertices on the segment, in order; built lazily
     bool haveEntries = false;
-    size_t nextEntry = 0;
-    auto entryAfter = [&](double k) {
-      if (!haveEntries) {
-        haveEntries = true;
-        double r = roundingReach(A, B, A);
-        double box[8][2] = {{A[0] - r, A[1] - r}, {A[0] + r, A[1] - r}, {A[0] + r, A[1] + r},
-                            {A[0] - r, A[1] + r}, {B[0] - r, B[1] - r}, {B[0] + r, B[1] - r},
-                            {B[0] + r, B[1] + r}, {B[0] - r, B[1] + r}};
-        const double* around[8];
-        for (int i = 0; i < 8; ++i) around[i] = box[i];
-        boundaryGrid().forEachNear(around, 8, [&](const Query& q) {
-          if (key(q.xy) >= key(A) && key(q.xy) <= key(B) && nearLine(A, B, q.xy))
-            entries.push_back(q.id);
-        });
-        std::sort(entries.begin(), entries.end(),
-                  [&](uint32_t u, uint32_t v) { return key(P(u)) < key(P(v)); });
-      }
-      while (nextEntry < entries.size() && key(P(entries[nextEntry])) <= k) ++nextEntry;
-      return nextEntry < entries.size() ? entries[nextEntry++] : kNone;
-    };
-
-    uint32_t start = rep_[a], end = rep_[b];
-    uint32_t cur = start != kNone ? start : entryAfter(-std::numeric_limits<double>::infinity());
-    if (cur != start && cur != kNone && enteredThroughTriangle(cur, A, name)) return;
-    while (cur != kNone && cur != end) {
-      onSegment_[cur] = s;
-      uint32_t exact = kNone, exactHe = kNone, past = kNone, near = kNone, nearHe = kNone;
-      // An edge runs past b only from a vertex exactly on the segment: from a rounded one
-      // (entered a rounding off the line) it does not lie along the segment to begin with
-      // (fuzz finding boundary-edge-along-segment-past-its-end.poly).
-      bool curOn = orient2d(A, B, P(cur)) == 0;
-      forEachEdge(cur, [&](uint32_t c, uint32_t h) {
-        bool on = orient2d(A, B, P(c)) == 0;
-        if (on && key(P(c)) > key(P(cur)) && onSegment_[c] != s) {  // never back: overlap-back-step.poly
-          if (key(P(c)) > key(B)) {
-            if (curOn) past = c;
-          } else if (exact == kNone) {
-            exact = c, exactHe = h;
-          }
-        } else if (listed_[canon(h)] && onSegment_[c] != s && key(P(c)) <= key(B) &&
-                   (near == kNone || key(P(c)) > key(P(near))) && (on || nearLine(A, B, P(c)))) {
-          near = c, nearHe = h;  // the most advanced, if several
-        }
-      });
-      // A near step that does not advance (roundings out of order) is for a chain that would
-      // otherwise be stuck inside the mesh: where the segment leaves the mesh at cur, it leaves
-      // (fuzz finding overlap-sideways-step.poly: a listed edge an ulp long beside the start).
-      if (near != kNone && key(P(near)) <= key(P(cur)) && triangleToward(cur, B) == kNone)
-        near = kNone;
-      if (exact == kNone) exact = near, exactHe = nearHe;
-      if (exact != kNone) {
-        uint32_t e = canon(exactHe);
-        marked_[e] = 1;
-        segCount_[e] += org(e) == cur ? 1 : -1;
-        cur = exact;
-        continue;
-      }
-      if (past != kNone)
-        return name("is not a chain of mesh edges: mesh edge ", cur, "-", past, " runs past ", b);
-      uint32_t t = triangleToward(cur, B);
-      if (t != kNone)
-        return name("is not a chain of mesh edges: stops at vertex ", cur, " and enters ", tri(t));
-      cur = entryAfter(key(P(cur)));
-      if (cur != kNone && enteredThroughTriangle(cur, A, name)) return;
+    // Whether a depth-first walk may also leave the domain where an edge goes on, and skip
+    // boundary vertices; tried only when no walk gets through without (see walkSteps).
+    bool leaveAnywhere = false;
+    // rerouteToListedEdges: listed edges only, those no walk has taken first; with
+    // mustTakeLeftOver only a walk that takes one of those (leftOver_) gets through.
+    bool preferListed = false, mustTakeLeftOver = false;
+    SegmentWalk(uint32_t s_, uint32_t a_, uint32_t b_, const double* A_, const double* B_)
+        : s(s_), a(a_), b(b_), A(A_), B(B_) {
+      reach = std::max(roundingReach(A, B, A), roundingReach(A, B, B));
+      // Position along the segment: the coordinate on its dominant axis, signed to grow toward b.
+      axis = std::fabs(B[0] - A[0]) >= std::fabs(B[1] - A[1]) ? 0 : 1;
+      dir = B[axis] > A[axis] ? 1 : -1;
     }
-    if (end != kNone && cur != end)
-      name("is not a chain of mesh edges: never reaches vertex ", end, ", which is in the mesh");
-    if (cur == end && end != kNone) onSegment_[end] = s;
+    double key(const double* p) const { return dir * p[axis]; }
+    double reach = 0;  // rounding reach about the segment (rounding.h), in key units
+  };
+
+  // The boundary vertices on the segment (within rounding reach) past position k, in order:
+  // the index of the first in w.entries.
+  size_t entriesAfter(SegmentWalk& w, double k) {
+    if (!w.haveEntries) {
+      w.haveEntries = true;
+      const double *A = w.A, *B = w.B;
+      double r = roundingReach(A, B, A);
+      double box[8][2] = {{A[0] - r, A[1] - r}, {A[0] + r, A[1] - r}, {A[0] + r, A[1] + r},
+                          {A[0] - r, A[1] + r}, {B[0] - r, B[1] - r}, {B[0] + r, B[1] - r},
+                          {B[0] + r, B[1] + r}, {B[0] - r, B[1] + r}};
+      const double* around[8];
+      for (int i = 0; i < 8; ++i) around[i] = box[i];
+      // From a rounding before a: where a is no mesh vertex, a rounded crossing may stand in
+      // for it an ulp behind it (fuzz finding overlap-reaches-through-triangle).
+      boundaryGrid().forEachNear(around, 8, [&](const Query& q) {
+        if (w.key(q.xy) >= w.key(A) - r && w.key(q.xy) <= w.key(B) && nearLine(A, B, q.xy))
+          w.entries.push_back(q.id);
+      });
+      std::sort(w.entries.begin(), w.entries.end(),
+                [&](uint32_t u, uint32_t v) { return w.key(P(u)) < w.key(P(v)); });
+    }
+    size_t i = 0;
+    while (i < w.entries.size() && w.key(P(w.entries[i])) <= k) ++i;
+    return i;
+  }
+
+  // One step of a walk: to vertex `to` along mesh half-edge `he`, or (he == kNone) past a
+  // stretch outside the domain to boundary vertex `to` (kNone: the segment ends outside).
+  struct WalkStep {
+    uint32_t to, he;
+  };
+  struct WalkFrame {
+    uint32_t vertex, he;             // the vertex, and the half-edge that led to it (or kNone)
+    uint32_t previousOnSegment;      // onSegment_[vertex] before the walk came
+    std::vector<WalkStep> steps;     // the steps from it, best first
+    size_t nextStep = 0;
+  };
+
+  // What logs why segment w is not a chain of mesh edges (report), or nothing (a depth-first
+  // walk trying its ways).
+  auto reporter(const SegmentWalk& w, bool report) {
+    return [this, &w, report](auto&&... parts) {
+      if (report) log_.add("input segment ", w.s, " (", w.a, "->", w.b, ") ", parts...);
+    };
+  }
+
+  // The steps from cur, best first: edges to a vertex exactly on the segment and closer to
+  // b, then listed edges to vertices within rounding reach, the most advanced first; with no
+  // such edge, the jump to the next boundary vertex if the segment leaves the domain at cur.
+  // The walk of first choices (backtrack false) logs why it is stuck at cur, if it is.
+  void walkSteps(SegmentWalk& w, uint32_t cur, bool backtrack, std::vector<WalkStep>& out) {
+    out.clear();
+    const double *A = w.A, *B = w.B;
+    auto key = [&](const double* p) { return w.key(p); };
+    auto name = reporter(w, !backtrack);
+    uint32_t past = kNone;
+    // An edge runs past b only from a vertex exactly on the segment: from a rounded one
+    // (entered a rounding off the line) it does not lie along the segment to begin with
+    // (fuzz finding boundary-edge-along-segment-past-its-end.poly).
+    bool curOn = orient2d(A, B, P(cur)) == 0;
+    size_t exactCount = 0;
+    const uint32_t end = rep_[w.b];
+    forEachEdge(cur, [&](uint32_t c, uint32_t h) {
+      bool on = orient2d(A, B, P(c)) == 0;
+      if (c == end && listed_[canon(h)] && key(P(cur)) > key(B)) {
+        // From a rounding past b back to b (chain-overshoots-its-end).
+        out.insert(out.begin() + long(exactCount++), {c, h});
+      } else if (on && key(P(c)) > key(P(cur)) && onSegment_[c] != w.s) {  // never back: overlap-back-step.poly
+        if (key(P(c)) > key(B)) {
+          if (curOn) past = c;
+        } else {
+          out.insert(out.begin() + long(exactCount++), {c, h});
+        }
+      } else if (listed_[canon(h)] && onSegment_[c] != w.s && key(P(c)) <= key(B) + w.reach &&
+                 (on || nearLine(A, B, P(c)))) {
+        // (up to a rounding past b: a chain may reach b from a rounded crossing an ulp
+        // beyond it, fuzz finding chain-overshoots-its-end.poly)
+        out.push_back({c, h});
+      }
+    });
+    // The most advanced near step first.
+    std::sort(out.begin() + long(exactCount), out.end(), [&](const WalkStep& x, const WalkStep& y) {
+      return key(P(x.to)) > key(P(y.to));
+    });
+    // A near step that does not advance (roundings out of order) is for a chain that would
+    // otherwise be stuck inside the mesh: where the segment leaves the mesh at cur, it leaves
+    // (fuzz finding overlap-sideways-step.poly: a listed edge an ulp long beside the start).
+    uint32_t toward = triangleToward(cur, B);
+    if (toward == kNone)
+      out.erase(std::remove_if(out.begin() + long(exactCount), out.end(),
+                               [&](const WalkStep& x) { return key(P(x.to)) <= key(P(cur)); }),
+                out.end());
+    if (w.preferListed) {  // listed edges no walk took, then the other listed ones; no others
+      out.erase(std::remove_if(out.begin(), out.end(), [&](const WalkStep& z) { return !listed_[canon(z.he)]; }),
+                out.end());
+      std::stable_sort(out.begin(), out.end(), [&](const WalkStep& x, const WalkStep& y) {
+        return !marked_[canon(x.he)] && marked_[canon(y.he)];
+      });
+    }
+    if (!out.empty()) {
+      if (!backtrack || !w.leaveAnywhere || toward != kNone) return;
+    } else if (past != kNone) {
+      return name("is not a chain of mesh edges: mesh edge ", cur, "-", past, " runs past ", w.b);
+    } else if (toward != kNone) {
+      return name("is not a chain of mesh edges: stops at vertex ", cur, " and enters ", tri(toward));
+    }
+    // The segment leaves the domain at cur and re-enters at the next boundary vertex on it.
+    // With w.leaveAnywhere also where an edge goes on, and at the boundary vertices after the
+    // next: one within rounding reach of the segment need not be on it (overlap-back-step.poly
+    // under EvenOdd: the segment leaves at its start and passes an ulp beside a boundary
+    // vertex whose triangle it never enters).
+    size_t i = entriesAfter(w, key(P(cur)));
+    if (i == w.entries.size()) return out.push_back({kNone, kNone});
+    for (size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? 4 : 1)); i < last; ++i) {
+      uint32_t next = w.entries[i];
+      if (backtrack ? triangleToward(next, A) == kNone : !enteredThroughTriangle(next, A, name))
+        out.push_back({next, kNone});
+    }
+  }
+
+  // The walk of segment w, depth first over the steps from each vertex (backtrack) or along
+  // the first step from each (reporting why it is stuck where it is). True, with the chain's
+  // edges marked, if it reaches b (or, b being no mesh vertex, ends outside the domain).
+  bool walkDepthFirst(SegmentWalk& w, bool backtrack) {
+    uint32_t start = rep_[w.a];
+    if (start != kNone) return walkFrom(w, backtrack, start);
+    // a is no mesh vertex: the segment starts outside the domain and enters it at a boundary
+    // vertex on it (with w.leaveAnywhere, one of the first few: see walkSteps).
+    size_t i = entriesAfter(w, -std::numeric_limits<double>::infinity());
+    if (i == w.entries.size()) return walkFrom(w, backtrack, kNone);
+    auto name = reporter(w, !backtrack);
+    for (size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? 4 : 1)); i < last; ++i) {
+      uint32_t first = w.entries[i];
+      bool through = backtrack ? triangleToward(first, w.A) != kNone
+                               : enteredThroughTriangle(first, w.A, name);
+      if (!through && walkFrom(w, backtrack, first)) return true;
+    }
+    return false;
+  }
+
+  // The walk of walkDepthFirst from vertex cur (kNone: the segment lies outside the domain).
+  bool walkFrom(SegmentWalk& w, bool backtrack, uint32_t cur) {
+    const uint32_t end = rep_[w.b];
+    auto name = reporter(w, !backtrack);
+    std::vector<WalkFrame>& stack = walkStack_;
+    stack.clear();
+    // Vertices past which every walk got stuck are not tried again for this segment; with
+    // that, and a bound on the steps, a walk takes time linear in what it looks at.
+    if (deadEnd_.size() != n_) deadEnd_.assign(n_, kNone);
+    size_t budget = 1024 + 16 * size_t(n_);
+    uint32_t via = kNone;  // the half-edge of the last step (kNone: a jump, or the start)
+    bool reached = false;
+    for (;;) {
+      if (cur == end || cur == kNone) {
+        reached = cur == end || end == kNone;
+        if (reached && w.mustTakeLeftOver) {
+          auto leftOver = [&](uint32_t h) { return h != kNone && leftOver_[canon(h)] && !marked_[canon(h)]; };
+          bool takes = leftOver(via);
+          for (size_t i = 1; i < stack.size() && !takes; ++i) takes = leftOver(stack[i].he);
+          reached = takes;
+        }
+        if (reached) break;
+        if (!backtrack) {
+          name("is not a chain of mesh edges: never reaches vertex ", end, ", which is in the mesh");
+          break;
+        }
+      } else {
+        stack.push_back({cur, via, onSegment_[cur], {}, 0});
+        onSegment_[cur] = w.s;
+        walkSteps(w, cur, backtrack, stack.back().steps);
+      }
+      // The next step: the first untried one from the deepest vertex that has one left.
+      bool stepped = false;
+      while (!stack.empty() && !stepped) {
+        WalkFrame& f = stack.back();
+        if (backtrack)
+          while (f.nextStep < f.steps.size() && f.steps[f.nextStep].to != kNone &&
+                 deadEnd_[f.steps[f.nextStep].to] == w.s)
+            ++f.nextStep;
+        if (f.nextStep < f.steps.size() && (backtrack || f.nextStep == 0)) {
+          const WalkStep& step = f.steps[f.nextStep++];
+          cur = step.to, via = step.he, stepped = true;
+        } else if (!backtrack) {
+          break;  // stuck, and walkSteps has said why
+        } else {
+          deadEnd_[f.vertex] = w.s;
+          onSegment_[f.vertex] = f.previousOnSegment;
+          stack.pop_back();
+        }
+      }
+      if (!stepped || (backtrack && budget-- == 0)) break;
+    }
+    if (backtrack && !reached) {
+      for (size_t i = stack.size(); i-- > 0;) onSegment_[stack[i].vertex] = stack[i].previousOnSegment;
+      return false;
+    }
+    // The chain walked (in full, or as far as the reporting walk got) lies on the segment.
+    Chain& chain = chains_[w.s];
+    chain.steps.clear();
+    chain.vertices.clear();
+    for (size_t i = 0; i < stack.size(); ++i) {
+      chain.vertices.push_back(stack[i].vertex);
+      if (i > 0 && stack[i].he != kNone) chain.steps.push_back({stack[i].he, stack[i - 1].vertex});
+    }
+    if (reached && end != kNone) {
+      if (via != kNone && !stack.empty()) chain.steps.push_back({via, stack.back().vertex});
+      chain.vertices.push_back(end);
+      onSegment_[end] = w.s;
+    }
+    for (const auto& step : chain.steps) markWalked(step[0], step[1]);
+    return reached;
+  }
+
+  // Half-edge h, taken from vertex from, lies on the segment walked (w: +1), or no longer
+  // does (w: -1).
+  void markWalked(uint32_t h, uint32_t from, int w = 1) {
+    if (h == kNone) return;
+    uint32_t e = canon(h);
+    marked_[e] += uint32_t(w);
+    segCount_[e] += org(e) == from ? w : -w;
+  }
+
+  // A segment's walk as found: its steps along mesh edges, and the vertices it went through.
+  struct Chain {
+    std::vector<std::array<uint32_t, 2>> steps;  // half-edge, and the vertex it was taken from
+    std::vector<uint32_t> vertices;
+  };
+
+  // Where segments lie a rounding apart, the mesh can hold two chains side by side and a
+  // walk may take the other segment's (fuzz finding parallel-chains-one-ulp-apart: the walk of
+  // 3->1 took 2-0-1, the mesh's chain for it is 2-4-1, and then edges 2-4 and 4-1, listed as
+  // segment edges, lay on no walk), or an unlisted edge exactly on a segment the mesh follows
+  // by a chain through a rounded crossing beside it (parallel-chains-leftover-edge). Where
+  // either is left, the walks of the segments concerned (through an end of a left-over listed
+  // edge, or along an unlisted edge) are tried again along listed edges only, those no walk
+  // took first, and a new walk is kept if it leaves fewer edges either listed and on no walk,
+  // or on a walk and unlisted (or as many, having freed an unlisted edge of its own).
+  void rerouteToListedEdges() {
+    auto wrong = [&](uint32_t e) { return listed_[e] ? marked_[e] == 0 : marked_[e] > 0; };
+    auto touchesLeftOver = [&](uint32_t v) {
+      bool any = false;
+      forEachEdge(v, [&](uint32_t, uint32_t h) { any |= leftOver_[canon(h)] && !marked_[canon(h)]; });
+      return any;
+    };
+    auto takesUnlisted = [&](const Chain& c) {
+      return std::any_of(c.steps.begin(), c.steps.end(), [&](const std::array<uint32_t, 2>& step) {
+        return !listed_[canon(step[0])];
+      });
+    };
+    auto apply = [&](const Chain& c, uint32_t s, int w) {
+      for (const auto& step : c.steps) markWalked(step[0], step[1], w);
+      for (uint32_t v : c.vertices)
+        if (w > 0) onSegment_[v] = s;
+        else if (onSegment_[v] == s) onSegment_[v] = kNone;
+    };
+    // The edges either chain takes, each once.
+    std::vector<uint32_t> edges;
+    auto wrongAmong = [&](const Chain& x, const Chain& y) {
+      edges.clear();
+      for (const Chain* c : {&x, &y})
+        for (const auto& step : c->steps) edges.push_back(canon(step[0]));
+      std::sort(edges.begin(), edges.end());
+      edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+      size_t n = 0;
+      for (uint32_t e : edges) n += wrong(e);
+      return n;
+    };
+    auto anyWrong = [&] {
+      for (uint32_t h = 0; h < 3 * T_; ++h)
+        if (canon(h) == h && wrong(h)) return true;
+      return false;
+    };
+    if (!anyWrong()) return;
+    // A few passes: a walk moved off an edge in one leaves it over for the next.
+    bool changed = true;
+    for (int pass = 0; pass < 4 && changed && (pass == 0 || anyWrong()); ++pass) {
+      changed = false;
+      leftOver_.assign(3 * size_t(T_), 0);
+      for (uint32_t h = 0; h < 3 * T_; ++h) leftOver_[h] = listed_[h] && !marked_[h];
+      for (uint32_t s = 0; s < in_.segmentCount(); ++s) {
+        const Chain& current = chains_[s];
+        bool nearLeftOver = std::any_of(current.vertices.begin(), current.vertices.end(), touchesLeftOver);
+        if (current.vertices.empty() || (!nearLeftOver && !takesUnlisted(current))) continue;
+        Chain old = current;
+        apply(old, s, -1);
+        uint32_t a = in_.segments[2 * s], b = in_.segments[2 * s + 1];
+        SegmentWalk walk{s, a, b, inP(a), inP(b)};
+        walk.preferListed = true;
+        walk.mustTakeLeftOver = nearLeftOver;
+        bool found = walkDepthFirst(walk, true);
+        if (!found) walk.leaveAnywhere = true, found = walkDepthFirst(walk, true);
+        if (!found) {
+          chains_[s] = old;
+          apply(old, s, 1);
+          continue;
+        }
+        Chain fresh = chains_[s];
+        size_t after = wrongAmong(old, fresh);
+        apply(fresh, s, -1);
+        apply(old, s, 1);
+        // Kept if it leaves fewer wrong edges, or as many but itself takes no unlisted edge
+        // where the old walk did (a segment given twice: one walk alone cannot free the edge).
+        size_t before = wrongAmong(old, fresh);
+        if (after < before || (after == before && takesUnlisted(old))) {
+          apply(old, s, -1);
+          apply(fresh, s, 1);
+          chains_[s] = fresh;
+          changed = true;
+        } else {
+          chains_[s] = old;
+        }
+      }
+    }
+    // Which segment each vertex lies on, from the walks as they now are.
+    std::fill(onSegment_.begin(), onSegment_.end(), kNone);
+    for (uint32_t s = 0; s < in_.segmentCount(); ++s)
+      for (uint32_t v : chains_[s].vertices) onSegment_[v] = s;
   }
 
   const QueryGrid& boundaryGrid() {
@@ -922,11 +1227,12 @@ class Validator {
     const char* rule = parity ? "EvenOdd" : "NonZero";
     std::vector<uint32_t> comp(T_, kNone), order;
     std::vector<int64_t> rel(T_, 0), offset;
-    std::vector<std::array<double, 2>> seeds;
+    std::vector<std::array<double, 2>> seeds;  // a point inside each component that has one
+    std::vector<uint32_t> seeded;               // and which component it is in
     order.reserve(T_);
     for (uint32_t root = 0; root < T_; ++root) {
       if (!good_[root] || comp[root] != kNone) continue;
-      uint32_t c = uint32_t(seeds.size());
+      uint32_t c = uint32_t(offset.size());
       size_t first = order.size();
       comp[root] = c;
       order.push_back(root);
@@ -945,12 +1251,35 @@ class Validator {
           }
         }
       }
-      uint32_t seed = interiorTriangle(order, first);
-      seeds.push_back(centroid(seed));
-      offset.push_back(-rel[seed]);
+      std::array<double, 2> inside;
+      uint32_t seed = kNone;
+      if (interiorPoint(order, first, seed, inside)) {
+        offset.push_back(-rel[seed]);
+        seeds.push_back(inside);
+        seeded.push_back(c);
+      } else {
+        const uint32_t* v = corners(seed);
+        offset.push_back(-rel[seed] + windingNumberInside(in_, P(v[0]), P(v[1]), P(v[2])));
+        // No double lies inside this component: it is all within an ulp of its edges, so of
+        // the input segments its chains stand for, and its winding number is defined only up
+        // to which side of them the rounding put it. One off from the exact one is taken if
+        // that one is consistent (parallel-chains-leftover-edge.poly under EvenOdd: a crossing
+        // rounded an ulp off a segment, and the sliver between the two).
+        auto consistent = [&](int64_t o) {
+          for (size_t i = first; i < order.size(); ++i) {
+            int64_t w = rel[order[i]] + o;
+            if (!keeps(w)) return false;
+            for (uint32_t h = 3 * order[i]; h < 3 * order[i] + 3; ++h)
+              if (twin_[h] == kNone && keeps(w - along(h))) return false;
+          }
+          return true;
+        };
+        for (int64_t d : {1, -1})
+          if (!consistent(offset.back()) && consistent(offset.back() + d)) offset.back() += d;
+      }
     }
     std::vector<int64_t> seedWinding = windingNumbers(in_, seeds);
-    for (uint32_t c = 0; c < seeds.size(); ++c) offset[c] += seedWinding[c];
+    for (size_t i = 0; i < seeds.size(); ++i) offset[seeded[i]] += seedWinding[i];
     for (uint32_t t = 0; t < T_; ++t) {
       if (!good_[t]) continue;
       int64_t w = rel[t] + offset[comp[t]];
@@ -971,19 +1300,35 @@ class Validator {
     return g;
   }
 
-  // A triangle of component order[first..] whose rounded centroid an exact test confirms to
-  // lie strictly inside it (a needle's centroid may round onto an edge).
-  uint32_t interiorTriangle(const std::vector<uint32_t>& order, size_t first) {
-    for (size_t i = first; i < order.size(); ++i) {
-      const uint32_t* c = corners(order[i]);
-      std::array<double, 2> g = centroid(order[i]);
-      if (orient2d(P(c[0]), P(c[1]), g.data()) > 0 && orient2d(P(c[1]), P(c[2]), g.data()) > 0 &&
-          orient2d(P(c[2]), P(c[0]), g.data()) > 0)
-        return order[i];
-    }
-    log_.add("no triangle of the component of ", tri(order[first]),
-             " has a centroid strictly inside it; its winding numbers may be off by one");
-    return order[first];
+  // A point an exact test confirms to lie strictly inside a triangle of component
+  // order[first..], for the winding number there: a rounded centroid, which in a needle may
+  // round onto or past an edge, or else a double a few ulps from it (fuzz finding
+  // overlap-twenty-ulps-off under EvenOdd: a component of one sliver twenty ulps high). False
+  // if there is none (every triangle an ulp high: windingNumberInside then).
+  bool interiorPoint(const std::vector<uint32_t>& order, size_t first, uint32_t& seed,
+                     std::array<double, 2>& inside) {
+    auto strictlyIn = [&](const uint32_t* c, const double* g) {
+      return orient2d(P(c[0]), P(c[1]), g) > 0 && orient2d(P(c[1]), P(c[2]), g) > 0 &&
+             orient2d(P(c[2]), P(c[0]), g) > 0;
+    };
+    for (int reach = 0; reach <= 4; reach += 4)
+      for (size_t i = first; i < order.size(); ++i) {
+        const uint32_t* c = corners(order[i]);
+        std::array<double, 2> g = centroid(order[i]);
+        for (int dx = -reach; dx <= reach; ++dx)
+          for (int dy = -reach; dy <= reach; ++dy) {
+            double q[2] = {g[0], g[1]};
+            for (int k = 0; k < std::abs(dx); ++k) q[0] = std::nextafter(q[0], dx * INFINITY);
+            for (int k = 0; k < std::abs(dy); ++k) q[1] = std::nextafter(q[1], dy * INFINITY);
+            if (strictlyIn(c, q)) {
+              seed = order[i];
+              inside = {q[0], q[1]};
+              return true;
+            }
+          }
+      }
+    seed = order[first];
+    return false;
   }
 
   // Unused vertices must lie outside every triangle; hole points (Triangle fill) inside no
@@ -1036,10 +1381,14 @@ class Validator {
   std::vector<uint32_t> twin_, rep_, twinOfUnused_;
   std::vector<uint32_t> anyOut_;             // per vertex: a half-edge leaving it, or kNone
   std::vector<uint32_t> fanOff_, fanStart_;  // per vertex: its boundary half-edges (open fans)
-  std::vector<uint8_t> marked_;              // per canonical half-edge: lies on an input segment
+  std::vector<uint32_t> marked_;  // per canonical half-edge: the walks along it (0: on no input segment)
   std::vector<uint8_t> listed_;              // per canonical half-edge: in Mesh::segments
   std::vector<int32_t> segCount_;    // per canonical half-edge: segments along it minus against
   std::vector<uint32_t> onSegment_;  // per vertex: an input segment through it, or kNone
+  std::vector<uint32_t> deadEnd_;    // per vertex: the segment whose walks all got stuck past it
+  std::vector<WalkFrame> walkStack_;
+  std::vector<Chain> chains_;  // per input segment: its walk (rerouteToListedEdges)
+  std::vector<uint8_t> leftOver_;  // per canonical half-edge: listed, and on no first walk
   QueryGrid grid_{{}};               // unused vertices and hole points
   std::unique_ptr<QueryGrid> boundaryGrid_;  // boundary vertices, built when a walk needs it
 };
