@@ -96,6 +96,7 @@ const Case kCases[] = {
     {"hex-coordinate.node", kReadError, 0, "hex-coordinate.node:2: expected x coordinate (a number), found '0x10'"},
     {"hole-count-far-larger-than-file.poly", kReadError, 0, "hole-count-far-larger-than-file.poly:11: expected a hole count the rest of the text can ho"},
     {"hole-eats-everything.poly", kMesh, 0, nullptr},
+    {"hole-on-a-split-segment.poly", kMesh, 8, nullptr},
     {"hole-in-open-outline.poly", kMesh, 0, nullptr},
     {"hole-on-segment.poly", kMesh, 2, nullptr},
     {"hole-on-vertex.poly", kMesh, 2, nullptr},
