@@ -888,11 +888,13 @@ class Validator {
                                [&](const WalkStep& x) { return key(P(x.to)) <= key(P(cur)); }),
                 out.end());
     if (w.preferListed) {  // listed edges no walk took, then the other listed ones; no others
-      out.erase(std::remove_if(out.begin(), out.end(), [&](const WalkStep& z) { return !listed_[canon(z.he)]; }),
-                out.end());
-      std::stable_sort(out.begin(), out.end(), [&](const WalkStep& x, const WalkStep& y) {
-        return !marked_[canon(x.he)] && marked_[canon(y.he)];
-      });
+      // (Two passes rather than std::stable_sort: libstdc++ 12's temporary buffer trips
+      // ASan's alloc-dealloc check.)
+      preferred_.clear();
+      for (bool walked : {false, true})
+        for (const WalkStep& z : out)
+          if (listed_[canon(z.he)] && (marked_[canon(z.he)] > 0) == walked) preferred_.push_back(z);
+      out.swap(preferred_);
     }
     if (!out.empty()) {
       if (!backtrack || !w.leaveAnywhere || toward != kNone) return;
@@ -1394,6 +1396,7 @@ class Validator {
   std::vector<uint32_t> onSegment_;  // per vertex: an input segment through it, or kNone
   std::vector<uint32_t> deadEnd_;    // per vertex: the segment whose walks all got stuck past it
   std::vector<WalkFrame> walkStack_;
+  std::vector<WalkStep> preferred_;  // walkSteps' scratch
   std::vector<Chain> chains_;  // per input segment: its walk (rerouteToListedEdges)
   std::vector<uint8_t> leftOver_;  // per canonical half-edge: listed, and on no first walk
   QueryGrid grid_{{}};               // unused vertices and hole points
