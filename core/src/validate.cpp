@@ -859,8 +859,9 @@ class Validator {
     const uint32_t end = rep_[w.b];
     forEachEdge(cur, [&](uint32_t c, uint32_t h) {
       bool on = orient2d(A, B, P(c)) == 0;
-      if (c == end && listed_[canon(h)] && key(P(cur)) > key(B)) {
-        // From a rounding past b back to b (chain-overshoots-its-end).
+      if (c == end && listed_[canon(h)]) {
+        // A listed edge to b ends the walk, even from a rounding past b or beside it
+        // (chain-overshoots-its-end, end-an-ulp-above-the-chain).
         out.insert(out.begin() + long(exactCount++), {c, h});
       } else if (on && key(P(c)) > key(P(cur)) && onSegment_[c] != w.s) {  // never back: overlap-back-step.poly
         if (key(P(c)) > key(B)) {

@@ -87,6 +87,7 @@ const Case kCases[] = {
     {"empty.json", kReadError, 0, "empty.json:1: expected '{' starting the top-level JSON object, found end of text"},
     {"empty.node", kReadError, 0, "empty.node:1: expected the header '<#vertices> <dimension> <#attributes> <#boundary marker"},
     {"empty.poly", kReadError, 0, "empty.poly:1: expected the header '<#vertices> <dimension> <#attributes> <#boundary marker"},
+    {"end-an-ulp-above-the-chain.poly", kMesh, 4, nullptr},
     {"enormous-scale-1e300.poly", kMesh, 29, nullptr},
     {"entry-an-ulp-beside.poly", kMesh, 2, nullptr},
     {"escape-in-message.node", kReadError, 0, "escape-in-message.node:3: expected x coordinate (a number), found '\\x1B[31mred\\x1B[0m'"},
@@ -341,7 +342,7 @@ TEST(BadInput, NearlyOverlappingSegmentsUnderEveryFill) {
                            "parallel-chains-one-ulp-apart.poly", "parallel-chains-leftover-edge.poly",
                            "overlap-reaches-through-triangle.poly", "chain-overshoots-its-end.poly",
                            "three-chains-duplicated.poly", "chains-rerouted-twice.poly",
-                           "entry-an-ulp-beside.poly"}) {
+                           "entry-an-ulp-beside.poly", "end-an-ulp-above-the-chain.poly"}) {
     Input in = fixtures::load(kBad + "/" + file);
     bool evenOddOpen = std::string(file) == "parallel-chains-leftover-edge.poly";
     bool evenOddOpenInAllModes = std::string(file) == "chains-rerouted-twice.poly";
