@@ -913,7 +913,7 @@ class Validator {
     if (i == w.entries.size()) return out.push_back({kNone, kNone});
     for (size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? 4 : 1)); i < last; ++i) {
       uint32_t next = w.entries[i];
-      if (backtrack ? triangleToward(next, A) == kNone : !enteredThroughTriangle(next, A, name))
+      if (backtrack ? enteringTriangle(next, A) == kNone : !enteredThroughTriangle(next, A, name))
         out.push_back({next, kNone});
     }
   }
@@ -931,7 +931,7 @@ class Validator {
     auto name = reporter(w, !backtrack);
     for (size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? 4 : 1)); i < last; ++i) {
       uint32_t first = w.entries[i];
-      bool through = backtrack ? triangleToward(first, w.A) != kNone
+      bool through = backtrack ? enteringTriangle(first, w.A) != kNone
                                : enteredThroughTriangle(first, w.A, name);
       if (!through && walkFrom(w, backtrack, first)) return true;
     }
@@ -1131,9 +1131,21 @@ class Validator {
   // one of v's triangles.
   template <class Name>
   bool enteredThroughTriangle(uint32_t v, const double* A, Name& name) {
-    uint32_t t = triangleToward(v, A);
+    uint32_t t = enteringTriangle(v, A);
     if (t != kNone) name("is not a chain of mesh edges: reaches vertex ", v, " through ", tri(t));
     return t != kNone;
+  }
+
+  // The triangle of v that the direction from v toward A enters, unless its side opposite v
+  // passes within rounding reach of v: a corner that thin a segment may graze by rounding
+  // (fuzz finding grazes-a-corner: two input vertices two ulps apart, a segment ending at
+  // one of them passing an ulp beside the other).
+  uint32_t enteringTriangle(uint32_t v, const double* A) const {
+    uint32_t t = triangleToward(v, A);
+    if (t == kNone) return kNone;
+    const uint32_t* c = corners(t);
+    int k = c[0] == v ? 0 : c[1] == v ? 1 : 2;
+    return nearSegment(P(c[(k + 1) % 3]), P(c[(k + 2) % 3]), P(v)) ? kNone : t;
   }
 
   void readMeshSegments() {

@@ -94,6 +94,7 @@ const Case kCases[] = {
     {"extra-field.poly", kReadError, 0, "extra-field.poly:3: expected '<id> <x> <y>', found an extra field '7'"},
     {"far-offset-1e10.poly", kMesh, 29, nullptr},
     {"far-offset-1e15.poly", kMesh, 6, nullptr},
+    {"grazes-a-corner.poly", kMesh, 4, nullptr},
     {"hex-coordinate.node", kReadError, 0, "hex-coordinate.node:2: expected x coordinate (a number), found '0x10'"},
     {"hole-count-far-larger-than-file.poly", kReadError, 0, "hole-count-far-larger-than-file.poly:11: expected a hole count the rest of the text can ho"},
     {"hole-eats-everything.poly", kMesh, 0, nullptr},
@@ -342,7 +343,8 @@ TEST(BadInput, NearlyOverlappingSegmentsUnderEveryFill) {
                            "parallel-chains-one-ulp-apart.poly", "parallel-chains-leftover-edge.poly",
                            "overlap-reaches-through-triangle.poly", "chain-overshoots-its-end.poly",
                            "three-chains-duplicated.poly", "chains-rerouted-twice.poly",
-                           "entry-an-ulp-beside.poly", "end-an-ulp-above-the-chain.poly"}) {
+                           "entry-an-ulp-beside.poly", "end-an-ulp-above-the-chain.poly",
+                           "grazes-a-corner.poly"}) {
     Input in = fixtures::load(kBad + "/" + file);
     bool evenOddOpen = std::string(file) == "parallel-chains-leftover-edge.poly";
     bool evenOddOpenInAllModes = std::string(file) == "chains-rerouted-twice.poly";
