@@ -73,8 +73,9 @@ struct Strategy {
   bool footOnSegments = false;  // non-obtuse: split an encroached subsegment at the altitude foot
   bool lazyFans = false;  // fans only at small sectors where a bad triangle turns up
   // Non-obtuse: slide a segment vertex to the middle of the stretch slideInterval() finds
-  // rather than to the first of a few sampled places that works. (Acute, where only the
-  // removal pass could use it: 67,744 -> 67,564 CG:SHOP points, not worth a fourth run.)
+  // rather than to the first of a few sampled places that works. (Acute, CG:SHOP 67,744
+  // Steiner points: exact slides everywhere 70,355; in the removal pass only 66,159 but A.poly
+  // 90 instead of 85, over aCute's 86; as two more strategies 67,564, not worth the runs.)
   bool exactSlide = false;
 };
 
@@ -179,6 +180,7 @@ class Refiner {
   };
   SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
   bool slideInterval(double tp, double tq, const SegmentLine& line, double& t);
+  std::vector<uint8_t> ringInside_;  // slide(): per triangle of ring_, in the domain
   bool tryRemove(uint32_t v);
   bool tryRemoveFromSegment(uint32_t v);
   bool tryMerge(uint32_t u, uint32_t w);
@@ -673,6 +675,7 @@ bool Refiner::slide(uint32_t a) {
   uint32_t spokes[2], count = 0, e0 = T_.vertexEdge[a], e = e0;
   std::vector<uint32_t>& ring = ring_;
   ring.clear();
+  ringInside_.clear();
   do {
     if (T_.isGhost(e / 3)) return false;
     if (T_.isFixed(e)) {
@@ -680,6 +683,7 @@ bool Refiner::slide(uint32_t a) {
       spokes[count++] = e;
     }
     ring.push_back(T_.tri[next(e)]);
+    ringInside_.push_back(T_.inside[e / 3]);
     e = T_.opp[prev(e)];
   } while (e != e0);
   if (count != 2 || T_.segment[spokes[0]] != T_.segment[spokes[1]]) return false;
@@ -706,7 +710,8 @@ bool Refiner::slide(uint32_t a) {
 }
 
 // Where along the segment line (parameter t strictly between tp and tq) a vertex with link
-// ring_ keeps every star triangle counter-clockwise with right or sharper angles: each
+// ring_ keeps every star triangle counter-clockwise, those in the domain (ringInside_) with
+// right or sharper angles: each
 // triangle (X(t), x, y) asks t to be on one side of three values (orientation, the angles at x
 // and y: linear in t) and outside the interval where the line crosses the diametral disk of
 // x-y (the angle at X). True with t the middle of the longest stretch left, if any. (In
@@ -727,6 +732,7 @@ bool Refiner::slideInterval(double tp, double tq, const SegmentLine& line, doubl
     double yx[2] = {y[0] - x[0], y[1] - x[1]}, sx[2] = {s[0] - x[0], s[1] - x[1]};
     double sy[2] = {s[0] - y[0], s[1] - y[1]}, xy[2] = {-yx[0], -yx[1]};
     keep(yx[0] * sx[1] - yx[1] * sx[0], yx[0] * d[1] - yx[1] * d[0]);  // X left of x->y
+    if (!ringInside_[i]) continue;  // outside the domain only the orientation counts
     keep(dot(sx, yx), dot(d, yx));                                     // angle at x
     keep(dot(sy, xy), dot(d, xy));                                     // angle at y
     double c[2] = {s[0] - 0.5 * (x[0] + y[0]), s[1] - 0.5 * (x[1] + y[1])};
