@@ -755,8 +755,11 @@ class Validator {
   // vertex on it (within rounding reach).
   // Segments a rounding apart can make two chains side by side, and the first step that
   // looks best may lead into the wrong one (fuzz finding parallel-chains-one-ulp-apart): the
-  // walk is depth first, trying the other steps from a vertex when one leads to a dead end.
-  // Only if no walk gets through is the segment reported, along the walk of first choices.
+  // walk is depth first, trying the other steps from a vertex when one leads to a dead end;
+  // failing that, walks that may also leave the domain where an edge goes on and skip
+  // boundary vertices beside the segment (SegmentWalk::leaveAnywhere). Only if no walk gets
+  // through is the segment reported, along the walk of first choices. rerouteToListedEdges()
+  // then matches the walks against the mesh's segment list.
   void walkSegment(uint32_t s) {
     uint32_t a = in_.segments[2 * s], b = in_.segments[2 * s + 1];
     const double *A = inP(a), *B = inP(b);
