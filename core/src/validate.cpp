@@ -947,9 +947,11 @@ class Validator {
     auto name = reporter(w, !backtrack);
     std::vector<WalkFrame>& stack = walkStack_;
     stack.clear();
-    // Vertices past which every walk got stuck are not tried again for this segment; with
-    // that, and a bound on the steps, a walk takes time linear in what it looks at.
-    if (deadEnd_.size() != n_) deadEnd_.assign(n_, kNone);
+    // Vertices past which every walk got stuck are not tried again in this walk (its rules:
+    // a later walk of the same segment may have other steps); with that, and a bound on the
+    // steps, a walk takes time linear in what it looks at.
+    if (deadEnd_.size() != n_) deadEnd_.assign(n_, 0);
+    const uint32_t id = ++walkId_;
     size_t budget = 1024 + 16 * size_t(n_);
     uint32_t via = kNone;  // the half-edge of the last step (kNone: a jump, or the start)
     bool reached = false;
@@ -978,7 +980,7 @@ class Validator {
         WalkFrame& f = stack.back();
         if (backtrack)
           while (f.nextStep < f.steps.size() && f.steps[f.nextStep].to != kNone &&
-                 deadEnd_[f.steps[f.nextStep].to] == w.s)
+                 deadEnd_[f.steps[f.nextStep].to] == id)
             ++f.nextStep;
         if (f.nextStep < f.steps.size() && (backtrack || f.nextStep == 0)) {
           const WalkStep& step = f.steps[f.nextStep++];
@@ -986,7 +988,7 @@ class Validator {
         } else if (!backtrack) {
           break;  // stuck, and walkSteps has said why
         } else {
-          deadEnd_[f.vertex] = w.s;
+          deadEnd_[f.vertex] = id;
           onSegment_[f.vertex] = f.previousOnSegment;
           stack.pop_back();
         }
@@ -1410,7 +1412,8 @@ class Validator {
   std::vector<uint8_t> listed_;              // per canonical half-edge: in Mesh::segments
   std::vector<int32_t> segCount_;    // per canonical half-edge: segments along it minus against
   std::vector<uint32_t> onSegment_;  // per vertex: an input segment through it, or kNone
-  std::vector<uint32_t> deadEnd_;    // per vertex: the segment whose walks all got stuck past it
+  std::vector<uint32_t> deadEnd_;    // per vertex: the walk (walkId_) that got stuck past it
+  uint32_t walkId_ = 0;
   std::vector<WalkFrame> walkStack_;
   std::vector<WalkStep> preferred_;  // walkSteps' scratch
   std::vector<Chain> chains_;  // per input segment: its walk (rerouteToListedEdges)
