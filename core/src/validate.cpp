@@ -789,13 +789,13 @@ class Validator {
     bool preferListed = false, mustTakeLeftOver = false;
     SegmentWalk(uint32_t s_, uint32_t a_, uint32_t b_, const double* A_, const double* B_)
         : s(s_), a(a_), b(b_), A(A_), B(B_) {
-      reach = std::max(roundingReach(A, B, A), roundingReach(A, B, B));
+      reach = roundingReach(A, B, A);
       // Position along the segment: the coordinate on its dominant axis, signed to grow toward b.
       axis = std::fabs(B[0] - A[0]) >= std::fabs(B[1] - A[1]) ? 0 : 1;
       dir = B[axis] > A[axis] ? 1 : -1;
     }
     double key(const double* p) const { return dir * p[axis]; }
-    double reach = 0;  // rounding reach about the segment (rounding.h), in key units
+    double reach = 0;  // roundingReach() about the segment (it takes both ends into account)
   };
 
   // The boundary vertices on the segment (within rounding reach) past position k, in order:
@@ -804,7 +804,7 @@ class Validator {
     if (!w.haveEntries) {
       w.haveEntries = true;
       const double *A = w.A, *B = w.B;
-      double r = roundingReach(A, B, A);
+      double r = w.reach;
       double box[8][2] = {{A[0] - r, A[1] - r}, {A[0] + r, A[1] - r}, {A[0] + r, A[1] + r},
                           {A[0] - r, A[1] + r}, {B[0] - r, B[1] - r}, {B[0] + r, B[1] - r},
                           {B[0] + r, B[1] + r}, {B[0] - r, B[1] + r}};
@@ -905,19 +905,30 @@ class Validator {
     } else if (past != kNone) {
       return name("is not a chain of mesh edges: mesh edge ", cur, "-", past, " runs past ", w.b);
     } else if (toward != kNone) {
-      return name("is not a chain of mesh edges: stops at vertex ", cur, " and enters ", tri(toward));
+      return name("is not a chain of mesh edges: stops at vertex ", cur, " and enters ",
+                  tri(toward));
     }
-    // The segment leaves the domain at cur and re-enters at the next boundary vertex on it.
-    // With w.leaveAnywhere also where an edge goes on, and at the boundary vertices after the
-    // next: one within rounding reach of the segment need not be on it (overlap-back-step.poly
-    // under EvenOdd: the segment leaves at its start and passes an ulp beside a boundary
-    // vertex whose triangle it never enters).
-    size_t i = entriesAfter(w, key(P(cur)));
+    // The segment leaves the domain at cur (with w.leaveAnywhere also where an edge goes on).
+    entrySteps(w, key(P(cur)), backtrack, out);
+  }
+
+  // The jumps to where the segment re-enters the domain after position k: the next boundary
+  // vertex on it, and with w.leaveAnywhere the few after it too, since one within rounding
+  // reach of the segment need not be on it (overlap-back-step.poly under EvenOdd: the segment
+  // leaves at its start and passes an ulp beside a boundary vertex whose triangle it never
+  // enters); {kNone} if none is left (the segment ends outside). A vertex the segment would
+  // reach through one of its triangles is no entry (the reporting walk says so).
+  void entrySteps(SegmentWalk& w, double k, bool backtrack, std::vector<WalkStep>& out) {
+    constexpr size_t kEntriesTried = 4;
+    auto name = reporter(w, !backtrack);
+    size_t i = entriesAfter(w, k);
     if (i == w.entries.size()) return out.push_back({kNone, kNone});
-    for (size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? 4 : 1)); i < last; ++i) {
+    size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? kEntriesTried : 1));
+    for (; i < last; ++i) {
       uint32_t next = w.entries[i];
-      if (backtrack ? enteringTriangle(next, A) == kNone : !enteredThroughTriangle(next, A, name))
-        out.push_back({next, kNone});
+      bool through = backtrack ? enteringTriangle(next, w.A) != kNone
+                               : enteredThroughTriangle(next, w.A, name);
+      if (!through) out.push_back({next, kNone});
     }
   }
 
@@ -927,17 +938,12 @@ class Validator {
   bool walkDepthFirst(SegmentWalk& w, bool backtrack) {
     uint32_t start = rep_[w.a];
     if (start != kNone) return walkFrom(w, backtrack, start);
-    // a is no mesh vertex: the segment starts outside the domain and enters it at a boundary
-    // vertex on it (with w.leaveAnywhere, one of the first few: see walkSteps).
-    size_t i = entriesAfter(w, -std::numeric_limits<double>::infinity());
-    if (i == w.entries.size()) return walkFrom(w, backtrack, kNone);
-    auto name = reporter(w, !backtrack);
-    for (size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? 4 : 1)); i < last; ++i) {
-      uint32_t first = w.entries[i];
-      bool through = backtrack ? enteringTriangle(first, w.A) != kNone
-                               : enteredThroughTriangle(first, w.A, name);
-      if (!through && walkFrom(w, backtrack, first)) return true;
-    }
+    // a is no mesh vertex: the segment starts outside the domain and enters it where
+    // entrySteps() says.
+    std::vector<WalkStep> firsts;
+    entrySteps(w, -std::numeric_limits<double>::infinity(), backtrack, firsts);
+    for (const WalkStep& first : firsts)
+      if (walkFrom(w, backtrack, first.to)) return true;
     return false;
   }
 
@@ -959,14 +965,14 @@ class Validator {
       if (cur == end || cur == kNone) {
         reached = cur == end || end == kNone;
         if (reached && w.mustTakeLeftOver) {
-          auto leftOver = [&](uint32_t h) { return h != kNone && leftOver_[canon(h)] && !marked_[canon(h)]; };
-          bool takes = leftOver(via);
-          for (size_t i = 1; i < stack.size() && !takes; ++i) takes = leftOver(stack[i].he);
+          bool takes = stillLeftOver(via);
+          for (size_t i = 1; i < stack.size() && !takes; ++i) takes = stillLeftOver(stack[i].he);
           reached = takes;
         }
         if (reached) break;
         if (!backtrack) {
-          name("is not a chain of mesh edges: never reaches vertex ", end, ", which is in the mesh");
+          name("is not a chain of mesh edges: never reaches vertex ", end,
+               ", which is in the mesh");
           break;
         }
       } else {
@@ -996,7 +1002,8 @@ class Validator {
       if (!stepped || (backtrack && budget-- == 0)) break;
     }
     if (backtrack && !reached) {
-      for (size_t i = stack.size(); i-- > 0;) onSegment_[stack[i].vertex] = stack[i].previousOnSegment;
+      for (size_t i = stack.size(); i-- > 0;)
+        onSegment_[stack[i].vertex] = stack[i].previousOnSegment;
       return false;
     }
     // The chain walked (in full, or as far as the reporting walk got) lies on the segment.
@@ -1014,6 +1021,12 @@ class Validator {
     }
     for (const auto& step : chain.steps) markWalked(step[0], step[1]);
     return reached;
+  }
+
+  // Whether half-edge h (kNone: no) was left over by the first walks and no walk has taken it
+  // since (rerouteToListedEdges).
+  bool stillLeftOver(uint32_t h) const {
+    return h != kNone && leftOver_[canon(h)] && !marked_[canon(h)];
   }
 
   // Half-edge h, taken from vertex from, lies on the segment walked (w: +1), or no longer
@@ -1044,7 +1057,7 @@ class Validator {
     auto wrong = [&](uint32_t e) { return listed_[e] ? marked_[e] == 0 : marked_[e] > 0; };
     auto touchesLeftOver = [&](uint32_t v) {
       bool any = false;
-      forEachEdge(v, [&](uint32_t, uint32_t h) { any |= leftOver_[canon(h)] && !marked_[canon(h)]; });
+      forEachEdge(v, [&](uint32_t, uint32_t h) { any |= stillLeftOver(h); });
       return any;
     };
     auto takesUnlisted = [&](const Chain& c) {
@@ -1084,7 +1097,8 @@ class Validator {
       for (uint32_t h = 0; h < 3 * T_; ++h) leftOver_[h] = listed_[h] && !marked_[h];
       for (uint32_t s = 0; s < in_.segmentCount(); ++s) {
         const Chain& current = chains_[s];
-        bool nearLeftOver = std::any_of(current.vertices.begin(), current.vertices.end(), touchesLeftOver);
+        bool nearLeftOver =
+            std::any_of(current.vertices.begin(), current.vertices.end(), touchesLeftOver);
         if (current.vertices.empty() || (!nearLeftOver && !takesUnlisted(current))) continue;
         Chain old = current;
         apply(old, s, -1);
@@ -1408,7 +1422,7 @@ class Validator {
   std::vector<uint32_t> twin_, rep_, twinOfUnused_;
   std::vector<uint32_t> anyOut_;             // per vertex: a half-edge leaving it, or kNone
   std::vector<uint32_t> fanOff_, fanStart_;  // per vertex: its boundary half-edges (open fans)
-  std::vector<uint32_t> marked_;  // per canonical half-edge: the walks along it (0: on no input segment)
+  std::vector<uint32_t> marked_;  // per canonical half-edge: walks along it (0: on no segment)
   std::vector<uint8_t> listed_;              // per canonical half-edge: in Mesh::segments
   std::vector<int32_t> segCount_;    // per canonical half-edge: segments along it minus against
   std::vector<uint32_t> onSegment_;  // per vertex: an input segment through it, or kNone
