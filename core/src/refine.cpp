@@ -20,11 +20,6 @@
 #include <array>
 #include <cmath>
 #include <memory>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
-#include <chrono>
-static double amNow(){return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();}
 
 #include "acutemesh/predicates.h"
 #include "build.h"
@@ -705,7 +700,8 @@ bool Refiner::slide(uint32_t a) {
   double tp = line.param(p), tq = line.param(q);
   double old[2] = {P(a)[0], P(a)[1]};
   // With strategy_.exactSlide the feasible stretch of the line is found directly
-  // (slideInterval): it finds narrow ones the samples below miss.
+  // (slideInterval): it finds narrow ones the samples below miss. (moveTo before
+  // nearFixedLinkEdge: it rejects most positions, and more cheaply.)
   if (strategy_.exactSlide) {
     double t = 0;
     if (!slideInterval(tp, tq, line, t)) return false;
@@ -713,7 +709,6 @@ bool Refiner::slide(uint32_t a) {
     line.at(t, x);
     if (moveTo(a, x[0], x[1]) && !nearFixedLinkEdge(a, x)) return true;
   }
-  // (moveTo first: it rejects most samples, and more cheaply than nearFixedLinkEdge.)
   for (int k : {8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14}) {
     double x[2];
     line.at(tp + (tq - tp) * k / 16.0, x);
@@ -990,12 +985,11 @@ void Refiner::polish() {
     size_t before = liveSteiner();
     Triangulation saved = T_;
     std::vector<uint8_t> savedRoles = role_;
-    double a0=amNow(); smooth(); double a1=amNow();
-    removeSteinerPoints(); size_t r1=liveSteiner(); double a2=amNow();
-    mergeSteinerPoints(); size_t r2=liveSteiner(); double a3=amNow();
+    smooth();
+    removeSteinerPoints();
+    mergeSteinerPoints();
     StepResult result = repairAll();
     size_t after = liveSteiner();
-    if (getenv("AM_DEBUG")) fprintf(stderr, " round %d: %zu smooth %.1f remove %.1f (-> %zu) merge %.1f (-> %zu) repair %.1f -> %zu\n", round, before, 1000*(a1-a0), 1000*(a2-a1), r1, 1000*(a3-a2), r2, 1000*(amNow()-a3), after);
     if (!result.ok() || anyBad() || after > before) {
       T_ = std::move(saved);
       role_ = std::move(savedRoles);
@@ -1325,7 +1319,7 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
                           std::vector<uint8_t>& freeVertex, StepResult& bestResult) {
   std::vector<Strategy> strategies = {Strategy{}};
   if (options.mode == Mode::NonObtuse) {
-    // Each with exact slides, then with sampled ones: CG:SHOP 49,678 -> 40,830 Steiner points
+    // Each with exact slides, then with sampled ones: CG:SHOP 49,678 -> 40,851 Steiner points
     // (exact slides alone: 41,745, but more on text outlines, A and Superior, where sampling
     // wins). The exact ones usually win, and run first their point count caps the rest early
     // (half the time of the other order on the slowest instances).
@@ -1339,7 +1333,6 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
   } else if (options.mode == Mode::Acute) {
     strategies.push_back({false, false, true});
   }
-  if (getenv("AM_ORDER")) { std::vector<Strategy> o; for (char ch : std::string(getenv("AM_ORDER"))) o.push_back(strategies[ch-'0']); strategies = o; }
   struct Run {
     std::unique_ptr<Triangulation> T;
     std::unique_ptr<Refiner> refiner;
@@ -1358,17 +1351,13 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
     Run run;
     run.T = std::make_unique<Triangulation>(T);
     run.refiner = std::make_unique<Refiner>(*run.T, input, options, budget, strategy, cap);
-    double t0=amNow();
     run.result = run.refiner->run();
     run.met = run.result.ok() && !run.refiner->anyBad();
-    if (getenv("AM_DEBUG")) fprintf(stderr, "strategy %d%d%d%d: met %d steiner %zu cap %u %.1f ms\n", strategy.cutAtFeetFirst, strategy.footOnSegments, strategy.lazyFans, strategy.exactSlide, run.met, run.refiner->liveSteiner(), cap, 1000*(amNow()-t0));
     if (!best.T || (run.met && (!best.met || run.refiner->liveSteiner() < best.refiner->liveSteiner())))
       best = std::move(run);
     if (best.result.status == Status::Cancelled || budget.stop()) break;
   }
-  double t1=amNow();
   if (best.met) best.refiner->polish();
-  if (getenv("AM_DEBUG")) fprintf(stderr, "polish -> %zu %.1f ms\n", best.refiner->liveSteiner(), 1000*(amNow()-t1));
   // Cancelled while improving: the mesh meets the target, but the caller asked to stop.
   if (budget.cancelled() && best.result.ok())
     best.result = {Status::Cancelled, "cancelled while removing Steiner points; the mesh meets "
