@@ -374,7 +374,8 @@ void Triangulation::flipAwaySpoke(uint32_t v, uint32_t w, std::vector<uint32_t>&
 bool Triangulation::removeVertex(uint32_t v) {
   uint32_t e0 = vertexEdge[v];
   if (e0 == kNone) return false;
-  std::vector<uint32_t> ring;  // link vertices in counter-clockwise order around v
+  std::vector<uint32_t>& ring = ring_;  // link vertices in counter-clockwise order around v
+  ring.clear();
   uint32_t e = e0;
   do {
     if (isGhost(e / 3) || fixed[e]) return false;
@@ -382,7 +383,8 @@ bool Triangulation::removeVertex(uint32_t v) {
     e = opp[prev(e)];
   } while (e != e0);
 
-  std::vector<uint32_t> stack;
+  std::vector<uint32_t>& stack = scratch_;
+  stack.clear();
   while (ring.size() > 3) {
     // Flip away the spoke v-w of an ear x, w, y of the link (x before w, y after it). Prefer an
     // ear whose circumcircle holds no other link vertex: it is a triangle of the final
@@ -427,21 +429,23 @@ bool Triangulation::removeVertex(uint32_t v) {
 bool Triangulation::removeFromSegment(uint32_t v, uint32_t ends[2]) {
   uint32_t e0 = vertexEdge[v];
   if (e0 == kNone) return false;
-  std::vector<uint32_t> ring;  // link vertices in counter-clockwise order around v
-  std::vector<size_t> fixedAt;
+  std::vector<uint32_t>& ring = ring_;  // link vertices in counter-clockwise order around v
+  ring.clear();
+  size_t fixedAt[2], fixedCount = 0;
   uint32_t e = e0;
   do {
     if (isGhost(e / 3)) return false;
-    if (fixed[e]) fixedAt.push_back(ring.size());
+    if (fixed[e] && fixedCount++ < 2) fixedAt[fixedCount - 1] = ring.size();
     ring.push_back(tri[next(e)]);
     e = opp[prev(e)];
   } while (e != e0);
-  if (fixedAt.size() != 2) return false;
+  if (fixedCount != 2) return false;
   // Rotate the ring to start at a: a, left side..., b, right side...
   std::rotate(ring.begin(), ring.begin() + long(fixedAt[0]), ring.end());
   const uint32_t a = ring[0], b = ring[fixedAt[1] - fixedAt[0]];
   ends[0] = a, ends[1] = b;
-  std::vector<uint32_t> stack;
+  std::vector<uint32_t>& stack = scratch_;
+  stack.clear();
   // Flip away the spokes to the link vertices strictly between a and b on each side, ears
   // first as in removeVertex, until one link vertex is left per side. Spokes v-a and v-b,
   // the segment's pieces, are never flipped.

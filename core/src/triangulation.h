@@ -160,6 +160,7 @@ class Triangulation {
   uint32_t slots_ = 0;
   std::vector<uint32_t> freeSlots_;
   std::vector<uint32_t> scratch_;
+  std::vector<uint32_t> ring_;  // removeVertex, removeFromSegment: the link of the vertex
   mutable uint32_t rng_ = 2463534242u;
 };
 
