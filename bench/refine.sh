@@ -9,7 +9,8 @@
 #  3. generates the inputs into bench/work/refine/ (bench/inputs/text.mjs, shapes.mjs) and
 #     notes any that differ from the committed copies in bench/inputs/data/;
 #  4. per input: `build/acutemesh --mode cdt|acute|nonobtuse --stats --no-output INPUT` (text
-#     outlines with --fill nonzero), best of $REFINE_RUNS by the CLI's own seconds.total; per
+#     outlines with --fill nonzero), best of $REFINE_RUNS by the CLI's own seconds.total, and
+#     `--mode quality --min-angle A` once for A in 30, 35, 40; per
 #     CG:SHOP instance: cdt, nonobtuse and acute once. Each run's stdout, stderr and exit
 #     status are kept in bench/work/refine/runs/;
 #  5. bench/inputs/report.mjs reads them and writes bench/results/refine-YYYY-MM-DD.md (and
@@ -28,6 +29,7 @@ RUNS="${REFINE_RUNS:-3}"
 TIME_LIMIT="${REFINE_TIME_LIMIT:-60}"
 CGSHOP_LIMIT="${CGSHOP_TIME_LIMIT:-10}"
 QUICK="${REFINE_QUICK:-0}"
+QUALITY_ANGLES="30 35 40"
 if [[ "$QUICK" == 1 ]]; then RUNS=1; fi
 FONT=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 SHARED=../shared/data
@@ -132,6 +134,14 @@ while IFS='|' read -r id label file args ref; do
         --stats --no-output "$file"
     done
   done
+  # Quality refinement at high minimum angles (where circumcentre insertion stops
+  # terminating): one run each, at the bounds QUALITY_ANGLES lists.
+  for angle in $QUALITY_ANGLES; do
+    note "$id: quality $angle"
+    # shellcheck disable=SC2086
+    run_one "$RUNDIR/$id.quality$angle.1" $((2 * TIME_LIMIT + 10)) --mode quality --min-angle "$angle" \
+      --time-limit "$TIME_LIMIT" $args --stats --no-output "$file"
+  done
 done <"$WORK/cases.txt"
 
 cgshop_dir=""
@@ -152,7 +162,7 @@ fi
 
 # --- report -----------------------------------------------------------------------------------
 out="bench/results/refine-$(date +%F).md"
-LOAD_START="$load_start" RUNS="$RUNS" TIME_LIMIT="$TIME_LIMIT" CGSHOP_LIMIT="$CGSHOP_LIMIT" \
+QUALITY_ANGLES="$QUALITY_ANGLES" LOAD_START="$load_start" RUNS="$RUNS" TIME_LIMIT="$TIME_LIMIT" CGSHOP_LIMIT="$CGSHOP_LIMIT" \
   node bench/inputs/report.mjs --work "$WORK" --cgshop "$cgshop_dir" --out "$out"
 echo
 cat "$out"

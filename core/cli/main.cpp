@@ -30,7 +30,8 @@ options:
                        cdt: constrained Delaunay triangulation of the domain (default)
                        acute: refine until every angle < --max-angle (default 90)
                        nonobtuse: refine until every angle <= 90
-                       quality: refine until every angle >= --min-angle (default 20)
+                       quality: refine until every angle >= --min-angle (default 20;
+                       terminates up to about 40)
   --max-angle DEG      acute mode's bound (exact at 90; 60 < DEG <= 90)
   --min-angle DEG      smallest angle wanted (quality; also with acute / nonobtuse)
   --max-area A         largest triangle area wanted (any refinement mode)

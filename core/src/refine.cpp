@@ -29,6 +29,9 @@ namespace acutemesh::detail {
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
+// Quality refinement places new points where the angles they make are this much (degrees)
+// over the bound, so that rounding cannot leave them just under it.
+constexpr double kQualityRoom = 0.5;
 
 // kOnHull: on a boundary edge no segment lies on (hull of a point set); kept in place like
 // kOnSegment, reported like kFree (no input segment holds it). kArc: on the arc of a corner
@@ -39,6 +42,7 @@ enum VertexRole : uint8_t { kInput, kOnSegment, kOnHull, kFree, kArc };
 struct Corner {
   int k = -1;         // corner index in its triangle, -1 if the triangle meets the target
   bool large = true;  // a large angle (else a small angle or too large an area)
+  bool area = false;  // too large an area (and no angle out of bounds)
 };
 
 double dist2(const double* a, const double* b) {
@@ -94,6 +98,7 @@ class Refiner {
     cosMax_ = std::cos(options.maxAngle * kDegree);
     strictMax_ = acute_ && options.maxAngle < 90;
     cosMin_ = std::cos(options.minAngle * kDegree);
+    cosQuality_ = std::cos(std::min(options.minAngle + kQualityRoom, 60.0) * kDegree);
     // Without a budget from the caller: 50 points per input vertex, at least 20000, and with
     // an area bound room for about two triangles of that area per unit of domain area.
     double cap = std::max(20000.0, 50.0 * inputCount);
@@ -215,6 +220,7 @@ class Refiner {
   StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
   void slicePoint(uint32_t t, double* x) const;
+  void qualityPoint(uint32_t t, double* x) const;
   uint32_t addVertex(const double* p, VertexRole role, uint32_t fanCenter = kNone) {
     role_.push_back(role);
     fanCenter_.push_back(fanCenter);
@@ -244,6 +250,7 @@ class Refiner {
   std::vector<double> fanRadius_;
   bool acute_ = false, nonObtuse_ = false;
   double cosMax_ = 0, cosMin_ = 1;
+  double cosQuality_ = 1;  // of the angles qualityPoint() aims for (a little over minAngle)
   bool strictMax_ = false;  // acute with a bound below 90 degrees, checked in floating point
   uint32_t steinerLimit_ = 0;
   // No edge shorter than 2^-24 of the input's extent is made: refinement that would go
@@ -282,7 +289,7 @@ Corner Refiner::worstCorner(uint32_t t) const {
   }
   if (options_.maxArea > 0) {
     double area = 0.5 * std::fabs(orient2d(p[0], p[1], p[2]));
-    if (area > options_.maxArea) return {0, false};
+    if (area > options_.maxArea) return {0, false, true};
   }
   return {};
 }
@@ -525,6 +532,66 @@ void Refiner::slicePoint(uint32_t t, double* x) const {
       ring[count++] = n;
       double r2 = dist2(c, P(w[0]));
       if (r2 > best) best = r2, x[0] = c[0], x[1] = c[1];
+    }
+  }
+}
+
+// Quality refinement's Steiner point for t, which has an angle under the bound alpha (after
+// the seed's locally optimal Steiner points, Erten & Üngör 2009): with pq the shortest edge of
+// t, the point of the region where p, q, x would make a triangle with every angle at least
+// alpha, inside t's circumdisk (so that t goes), farthest from all vertices. Candidates are
+// Üngör's off-centre (on pq's bisector where the angle at x is a little over alpha; the
+// circumcentre if that is nearer to pq) and the Voronoi vertices met walking from t's
+// circumcentre inside its circumdisk (each as far from every vertex as its triangle's
+// circumradius). Circumcentres alone (Ruppert) stop terminating near 34 degrees.
+void Refiner::qualityPoint(uint32_t t, double* x) const {
+  const uint32_t* v = &T_.tri[3 * t];
+  int s = 0;
+  for (int k = 1; k < 3; ++k)
+    if (dist2(P(v[(k + 1) % 3]), P(v[(k + 2) % 3])) < dist2(P(v[(s + 1) % 3]), P(v[(s + 2) % 3])))
+      s = k;
+  const double *p = P(v[(s + 1) % 3]), *q = P(v[(s + 2) % 3]);
+  double center[2];
+  circumcenter(P(v[0]), P(v[1]), P(v[2]), center);
+  double radius2 = dist2(center, p);
+  // pq's bisector, pointing to t's side (t is counter-clockwise: left of p->q).
+  double ux = q[0] - p[0], uy = q[1] - p[1], len = std::sqrt(ux * ux + uy * uy);
+  double mid[2] = {0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])}, n[2] = {-uy / len, ux / len};
+  // tan(bound / 2) from the cosine by IEEE-exact operations (std::tan could round differently
+  // in the WebAssembly build's libm).
+  const double cosBound = cosQuality_;
+  double offHeight = 0.5 * len / std::sqrt((1 - cosBound) / (1 + cosBound));
+  double centerHeight = (center[0] - mid[0]) * n[0] + (center[1] - mid[1]) * n[1];
+  if (centerHeight <= offHeight) {
+    x[0] = center[0], x[1] = center[1];
+  } else {
+    x[0] = mid[0] + offHeight * n[0], x[1] = mid[1] + offHeight * n[1];
+  }
+  double best = dist2(x, p);  // for the off-centre: an upper bound
+  auto atLeast = [&](const double* a, const double* b, const double* c) {  // angle bac
+    double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    return bx * cx + by * cy <= cosBound * std::sqrt((bx * bx + by * by) * (cx * cx + cy * cy));
+  };
+  auto inRegion = [&](const double* c) {
+    return (c[0] - mid[0]) * n[0] + (c[1] - mid[1]) * n[1] > 0 && atLeast(p, q, c) &&
+           atLeast(q, c, p) && atLeast(c, p, q);
+  };
+  uint32_t ring[64];
+  size_t head = 0, count = 0;
+  ring[count++] = t;
+  while (head < count) {
+    uint32_t u = ring[head++];
+    for (uint32_t e = 3 * u; e < 3 * u + 3; ++e) {
+      uint32_t nb = T_.opp[e] / 3;
+      if (T_.isFixed(e) || !T_.inside[nb] || T_.isGhost(nb) || count == 64) continue;
+      if (std::find(ring, ring + count, nb) != ring + count) continue;
+      const uint32_t* w = &T_.tri[3 * nb];
+      double c[2];
+      circumcenter(P(w[0]), P(w[1]), P(w[2]), c);
+      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !(dist2(c, center) < radius2)) continue;
+      ring[count++] = nb;
+      double r2 = dist2(c, P(w[0]));
+      if (r2 > best && inRegion(c)) best = r2, x[0] = c[0], x[1] = c[1];
     }
   }
 }
@@ -803,13 +870,22 @@ void Refiner::clipToLinkSlabs(bool wedges) {
     poly.swap(next);
   };
   const double c = wedges ? cosMax_ : 0, s = wedges ? std::sqrt(1 - c * c) : 1;
+  const double cm = cosMin_, sm = std::sqrt(1 - cm * cm);
   for (size_t i = 0; i < linkEdges_.size() && !poly.empty(); ++i) {
     const double *x = P(linkEdges_[i][0]), *y = P(linkEdges_[i][1]);
     double dx = y[0] - x[0], dy = y[1] - x[1];
-    double rx = dx * c - dy * s, ry = dx * s + dy * c;    // x->y turned by the bound about x
-    clip(ry, -rx, ry * x[0] - rx * x[1]);                 // p right of that ray
-    double qx = -dx * c - dy * s, qy = dx * s - dy * c;   // y->x turned back by it about y
-    clip(-qy, qx, -qy * y[0] + qx * y[1]);                // p left of that ray
+    if (acute_ || nonObtuse_) {
+      double rx = dx * c - dy * s, ry = dx * s + dy * c;   // x->y turned by the bound about x
+      clip(ry, -rx, ry * x[0] - rx * x[1]);                // p right of that ray
+      double qx = -dx * c - dy * s, qy = dx * s - dy * c;  // y->x turned back by it about y
+      clip(-qy, qx, -qy * y[0] + qx * y[1]);               // p left of that ray
+    }
+    if (options_.minAngle > 0) {  // the same rays for the smallest angle, p on their far sides
+      double rx = dx * cm - dy * sm, ry = dx * sm + dy * cm;
+      clip(-ry, rx, -ry * x[0] + rx * x[1]);
+      double qx = -dx * cm - dy * sm, qy = dx * sm - dy * cm;
+      clip(qy, -qx, qy * y[0] - qx * y[1]);
+    }
     clip(-dy, dx, -dy * x[0] + dx * x[1]);
   }
 }
@@ -880,7 +956,7 @@ bool Refiner::repair(uint32_t t, Corner c) {
       }
     }
   }
-  if (c.large) {
+  if (!c.area) {
     // First try to repair the triangle by moving one of its Steiner points: a free one
     // anywhere in its kernel (seed 2.2), one on a segment along the segment.
     for (int k = 0; k < 3; ++k) {
@@ -896,6 +972,8 @@ bool Refiner::repair(uint32_t t, Corner c) {
         return true;
       }
     }
+  }
+  if (c.large) {
     // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
     uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
     if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) return splitAtFoot(t, c.k);
@@ -906,7 +984,10 @@ bool Refiner::repair(uint32_t t, Corner c) {
   }
   const uint32_t* v = &T_.tri[3 * t];
   double x[2];
-  circumcenter(P(v[0]), P(v[1]), P(v[2]), x);
+  if (c.area)
+    circumcenter(P(v[0]), P(v[1]), P(v[2]), x);
+  else
+    qualityPoint(t, x);
   return insertSteiner(t, x);
 }
 
