@@ -71,6 +71,58 @@ double powerOfTwoNear(double x) {
   return std::ldexp(1.0, m >= M_SQRT1_2 ? e : e - 1);
 }
 
+// repairAll()'s queue of bad triangles, largest (squared shortest edge) first. Two orders:
+// - exact (a binary heap on size, then index): acute, non-obtuse and min-angle refinement
+//   come out with the fewest points this way (by factors of two instead: CG:SHOP non-obtuse 3%
+//   more, A.poly acute 91 instead of 85, quality at 40 degrees on A.poly 127 instead of 94);
+// - by factors of two, newest first within one (a stack per binary exponent of the size):
+//   with an area bound, where most of the work is area refinement of large meshes. Working
+//   near the last insertion keeps the mesh in cache: a million triangles in half the time.
+class RepairQueue {
+ public:
+  using Entry = std::pair<double, uint32_t>;
+  void reset(bool byFactorsOfTwo) {
+    rough_ = byFactorsOfTwo;
+    heap_.clear();
+    for (auto& b : buckets_) b.clear();
+    top_ = 0;
+  }
+  void push(double size, uint32_t t) {
+    if (!rough_) {
+      heap_.push_back({size, t});
+      std::push_heap(heap_.begin(), heap_.end());
+      return;
+    }
+    int e = 0;
+    std::frexp(size, &e);
+    size_t b = size_t(std::clamp(e + kBias, 0, kBuckets - 1));
+    if (buckets_.empty()) buckets_.resize(kBuckets);
+    buckets_[b].push_back({size, t});
+    top_ = std::max(top_, b + 1);
+  }
+  bool pop(double& size, uint32_t& t) {
+    std::vector<Entry>* from = &heap_;
+    if (rough_) {
+      while (top_ > 0 && buckets_[top_ - 1].empty()) --top_;
+      if (top_ == 0) return false;
+      from = &buckets_[top_ - 1];
+    } else {
+      if (heap_.empty()) return false;
+      std::pop_heap(heap_.begin(), heap_.end());
+    }
+    size = from->back().first, t = from->back().second;
+    from->pop_back();
+    return true;
+  }
+
+ private:
+  static constexpr int kBuckets = 2200, kBias = 1100;  // binary exponents of doubles, shifted
+  bool rough_ = false;
+  std::vector<Entry> heap_;
+  std::vector<std::vector<Entry>> buckets_;
+  size_t top_ = 0;
+};
+
 // How a run goes about the boundary. No one way wins everywhere (see refine()).
 struct Strategy {
   bool cutAtFeetFirst = false;  // non-obtuse: cut slivers at altitude feet before the fans
@@ -101,9 +153,8 @@ class Refiner {
     cosQuality_ = std::cos(std::min(options.minAngle + kQualityRoom, 60.0) * kDegree);
     // Without a budget from the caller: 50 points per input vertex, at least 20000, and with
     // an area bound room for about two triangles of that area per unit of domain area.
-    double cap = std::max(20000.0, 50.0 * inputCount);
+    double cap = std::max(20000.0, 50.0 * inputCount), area = 0;
     if (options.maxArea > 0) {
-      double area = 0;
       for (uint32_t t = 0; t < T.triangleSlots(); ++t)
         if (!T.isFree(t) && T.inside[t] && !T.isGhost(t))
           area += 0.5 * orient2d(P(T.tri[3 * t]), P(T.tri[3 * t + 1]), P(T.tri[3 * t + 2]));
@@ -112,6 +163,13 @@ class Refiner {
     if (options.maxSteiner) cap = options.maxSteiner;
     if (steinerCap) cap = std::min(cap, double(steinerCap));
     steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, double(kMaxVertices)));
+    if (options.maxArea > 0) {
+      // About one vertex per two triangles of a third of the bound's area, within the budget.
+      double vertices = std::min(double(steinerLimit_), T.vertexCount() + 1.6 * area / options.maxArea);
+      T.reserveCapacity(size_t(vertices), 2 * size_t(vertices) + 16);
+      role_.reserve(size_t(vertices));
+      fanCenter_.reserve(size_t(vertices));
+    }
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < input.points.size(); ++i)
       lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
@@ -257,6 +315,7 @@ class Refiner {
   // deeper (a narrow wedge it cannot fill) stops there and leaves the triangle to the
   // certificate, instead of spiralling into rounding noise.
   double minEdge2_ = 0;
+  RepairQueue queue_;
   std::vector<uint32_t> touched_, cavity_, ring_, hole_, flips_;
   std::vector<std::array<uint32_t, 2>> linkEdges_;  // clipToLinkSlabs()' input
   std::vector<std::array<double, 2>> clipPoly_, clipNext_;  // and scratch
@@ -1085,16 +1144,17 @@ StepResult Refiner::repairAll() {
   // Bad triangles are repaired largest first (by shortest edge). Depth-first repair of the
   // newest triangles instead lets refinement spiral into one spot; largest-first keeps the
   // vertex spacing even. Entries are re-checked when popped (a triangle may have changed).
-  std::vector<std::pair<double, uint32_t>> heap;
+  RepairQueue& queue = queue_;
+  queue.reset(options_.maxArea > 0);
   auto push = [&](uint32_t t) {
-    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) {
-      heap.push_back({shortestEdge2(t), t});
-      std::push_heap(heap.begin(), heap.end());
-    }
+    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0)
+      queue.push(shortestEdge2(t), t);
   };
   for (uint32_t t = 0; t < T_.triangleSlots(); ++t) push(t);
   uint32_t steps = 0;
-  while (!heap.empty()) {
+  double size = 0;
+  uint32_t t = 0;
+  while (queue.pop(size, t)) {
     if ((++steps & 255) == 0) {
       if (budget_.stop())
         return {budget_.cancelled() ? Status::Cancelled : Status::TargetNotMet,
@@ -1105,9 +1165,6 @@ StepResult Refiner::repairAll() {
     if (T_.vertexCount() >= steinerLimit_)
       return {Status::TargetNotMet, "Steiner point budget used up before every triangle met "
                                     "the target"};
-    auto [size, t] = heap.front();
-    std::pop_heap(heap.begin(), heap.end());
-    heap.pop_back();
     if (T_.isFree(t) || !T_.inside[t] || shortestEdge2(t) != size) continue;
     Corner c = worstCorner(t);
     if (c.k < 0) continue;

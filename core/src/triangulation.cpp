@@ -24,6 +24,18 @@ void Triangulation::reserveTriangles(size_t count) {
   }
 }
 
+void Triangulation::reserveCapacity(size_t vertices, size_t triangles) {
+  pts.reserve(2 * vertices);
+  vertexEdge.reserve(vertices);
+  for (std::vector<uint32_t>* v : {&tri, &opp}) v->reserve(3 * triangles);
+  fixed.reserve(3 * triangles);
+  if (trackSegments) {
+    wind.reserve(3 * triangles);
+    segment.reserve(3 * triangles);
+  }
+  if (!inside.empty()) inside.reserve(triangles);
+}
+
 uint32_t Triangulation::newTriangle() {
   if (!freeSlots_.empty()) {
     uint32_t t = freeSlots_.back();

@@ -61,6 +61,9 @@ class Triangulation {
   uint32_t triangleSlots() const { return slots_; }
   // Sizes the arrays for `count` triangle slots up front (one allocation instead of many).
   void reserveTriangles(size_t count);
+  // Room for this many vertices and triangles in all, without filling it: growth up to there
+  // then copies nothing (refinement to an area bound knows roughly how big it gets).
+  void reserveCapacity(size_t vertices, size_t triangles);
   const double* point(uint32_t v) const { return &pts[2 * size_t(v)]; }
   bool isGhost(uint32_t t) const {
     return tri[3 * t] == kGhost || tri[3 * t + 1] == kGhost || tri[3 * t + 2] == kGhost;
