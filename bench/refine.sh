@@ -10,7 +10,8 @@
 #     notes any that differ from the committed copies in bench/inputs/data/;
 #  4. per input: `build/acutemesh --mode cdt|acute|nonobtuse --stats --no-output INPUT` (text
 #     outlines with --fill nonzero), best of $REFINE_RUNS by the CLI's own seconds.total, and
-#     `--mode quality --min-angle A` once for A in 30, 35, 40; per
+#     `--mode quality --min-angle A` once for A in 30, 35, 40; the unit square refined to an
+#     area bound of 1e-6 (throughput, best of $REFINE_RUNS); per
 #     CG:SHOP instance: cdt, nonobtuse and acute once. Each run's stdout, stderr and exit
 #     status are kept in bench/work/refine/runs/;
 #  5. bench/inputs/report.mjs reads them and writes bench/results/refine-YYYY-MM-DD.md (and
@@ -143,6 +144,17 @@ while IFS='|' read -r id label file args ref; do
       --time-limit "$TIME_LIMIT" $args --stats --no-output "$file"
   done
 done <"$WORK/cases.txt"
+
+# Throughput: the unit square refined to an area bound of 1e-6 (about 1.5M triangles, default
+# minimum angle 20), best of $RUNS.
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$WORK/square.poly"
+if ((have_cli)); then
+  note "throughput: unit square, --max-area 1e-6"
+  for ((k = 1; k <= RUNS; k++)); do
+    run_one "$RUNDIR/throughput.$k" $((2 * TIME_LIMIT + 10)) --mode quality --max-area 1e-6 \
+      --time-limit "$TIME_LIMIT" --stats --no-output "$WORK/square.poly"
+  done
+fi
 
 cgshop_dir=""
 if [[ "$QUICK" != 1 && -d "$SHARED/cgshop2025" ]]; then
