@@ -32,6 +32,8 @@ constexpr double kDegree = M_PI / 180.0;
 // Quality refinement places new points where the angles they make are this much (degrees)
 // over the bound, so that rounding cannot leave them just under it.
 constexpr double kQualityRoom = 0.5;
+// How many points of a slice are tried for one that encroaches no subsegment.
+constexpr size_t kSliceTries = 3;
 
 // kOnHull: on a boundary edge no segment lies on (hull of a point set); kept in place like
 // kOnSegment, reported like kFree (no input segment holds it). kArc: on the arc of a corner
@@ -133,6 +135,9 @@ struct Strategy {
   // Steiner points: exact slides everywhere 70,355; in the removal pass only 66,159 but A.poly
   // 90 instead of 85, over aCute's 86; as two more strategies 67,564, not worth the runs.)
   bool exactSlide = false;
+  // Of the slice's points, one that encroaches no subsegment before the farthest (see
+  // repair()).
+  bool sliceSparesSegments = true;
 };
 
 class Refiner {
@@ -224,6 +229,12 @@ class Refiner {
   bool splitAtFoot(uint32_t t, int k);
   void releaseChords();
   bool insertSteiner(uint32_t from, const double* x);
+  // The subsegment on the rim of x's cavity (seen from triangle `from`) that x encroaches,
+  // the longest if several, and the first fixed edge x lies beyond; kNone where none.
+  struct CavityRim {
+    uint32_t encroached, beyond;
+  };
+  CavityRim examineCavity(uint32_t from, const double* x);
   uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
   bool relocate(uint32_t a);
   void legalizeStar(uint32_t a);
@@ -277,7 +288,10 @@ class Refiner {
   void smooth();
   StepResult repairAll();
   bool starMeetsTarget(uint32_t a) const;
-  void slicePoint(uint32_t t, double* x) const;
+  // Points of slice(pq) (pq the shortest edge of t), farthest from every vertex first: x, y
+  // and that distance squared.
+  void slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const;
+  std::vector<std::array<double, 3>> slicePoints_;
   void qualityPoint(uint32_t t, double* x) const;
   uint32_t addVertex(const double* p, VertexRole role, uint32_t fanCenter = kNone) {
     role_.push_back(role);
@@ -557,7 +571,7 @@ void Refiner::releaseChords() {
 // The point of slice(pq) farthest from all vertices, pq the shortest edge of t: the best of
 // the Voronoi vertices (circumcentres) met walking from t's circumcentre while they stay in
 // the slice; each is as far from its nearest vertex as its triangle's circumradius.
-void Refiner::slicePoint(uint32_t t, double* x) const {
+void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const {
   const uint32_t* v = &T_.tri[3 * t];
   int s = 0;
   for (int k = 1; k < 3; ++k)
@@ -572,8 +586,7 @@ void Refiner::slicePoint(uint32_t t, double* x) const {
     double along = (c[0] - p[0]) * ux + (c[1] - p[1]) * uy;
     return along > 0 && along < len2 && dist2(c, center) < radius2;
   };
-  x[0] = center[0], x[1] = center[1];
-  double best = radius2;
+  out.assign(1, {center[0], center[1], radius2});
   // Breadth-first over a small neighbourhood of triangles whose circumcentres lie in the slice.
   uint32_t ring[64];
   size_t head = 0, count = 0;
@@ -589,10 +602,13 @@ void Refiner::slicePoint(uint32_t t, double* x) const {
       circumcenter(P(w[0]), P(w[1]), P(w[2]), c);
       if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !inSlice(c)) continue;
       ring[count++] = n;
-      double r2 = dist2(c, P(w[0]));
-      if (r2 > best) best = r2, x[0] = c[0], x[1] = c[1];
+      out.push_back({c[0], c[1], dist2(c, P(w[0]))});
     }
   }
+  // Insertion sort, farthest first, ties in the order found (a few dozen entries; the same
+  // order in every standard library).
+  for (size_t i = 1; i < out.size(); ++i)
+    for (size_t j = i; j > 0 && out[j - 1][2] < out[j][2]; --j) std::swap(out[j - 1], out[j]);
 }
 
 // Quality refinement's Steiner point for t, which has an angle under the bound alpha (after
@@ -657,8 +673,7 @@ void Refiner::qualityPoint(uint32_t t, double* x) const {
 
 // Inserts x, found for triangle `from` (x lies in its circumdisk), unless it encroaches a
 // subsegment or lies beyond one: then that subsegment is split instead.
-bool Refiner::insertSteiner(uint32_t from, const double* x) {
-  if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
+Refiner::CavityRim Refiner::examineCavity(uint32_t from, const double* x) {
   // The cavity: triangles reachable from `from` without crossing a fixed edge whose
   // circumcircle holds x. Fixed edges on its rim are the subsegments x could encroach.
   cavity_.assign(1, from);
@@ -683,6 +698,12 @@ bool Refiner::insertSteiner(uint32_t from, const double* x) {
     }
     if (cavity_.size() > 256) break;
   }
+  return {encroached, beyond};
+}
+
+bool Refiner::insertSteiner(uint32_t from, const double* x) {
+  if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
+  auto [encroached, beyond] = examineCavity(from, x);
   if (encroached != kNone) return splitSubsegment(encroached);
   Location loc = T_.locate(x, from);
   if (loc.where == Where::Failed || loc.where == Where::OnVertex) return false;
@@ -777,6 +798,11 @@ Refiner::SegmentLine Refiner::segmentLine(uint32_t seg, const double* p, const d
 bool Refiner::moveTo(uint32_t a, double x, double y) {
   double* where = &T_.pts[2 * size_t(a)];
   where[0] = x, where[1] = y;
+  // No edge shorter than the refinement's smallest (a slide into a stretch a few ulps long
+  // left two segment vertices 40 ulps apart, too close for their subsegment to have a
+  // direction).
+  for (uint32_t w : ring_)
+    if (dist2(where, P(w)) < minEdge2_) return false;
   // The right angle at a is what most samples fail: tested first (the answer is the same).
   if (acute_ || nonObtuse_)
     for (size_t i = 0, n = ring_.size(); i < n; ++i) {
@@ -1037,9 +1063,15 @@ bool Refiner::repair(uint32_t t, Corner c) {
     uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
     if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) return splitAtFoot(t, c.k);
     if (T_.isFixed(opposite)) return splitSubsegment(opposite);
-    double x[2];
-    slicePoint(t, x);
-    return insertSteiner(t, x);
+    // The farthest point of the slice; but one that encroaches a subsegment would split it,
+    // and next to a sliver each split starts a chain of feet across it: a point of the slice
+    // that encroaches nothing goes first, if there is one.
+    std::vector<std::array<double, 3>>& points = slicePoints_;
+    slicePoints(t, points);
+    for (size_t i = 0; strategy_.sliceSparesSegments && i < points.size() && i < kSliceTries; ++i)
+      if (examineCavity(t, points[i].data()).encroached == kNone && insertSteiner(t, points[i].data()))
+        return true;
+    return insertSteiner(t, points[0].data());
   }
   const uint32_t* v = &T_.tri[3 * t];
   double x[2];
@@ -1470,6 +1502,10 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
       }
   } else if (options.mode == Mode::Acute) {
     strategies.push_back({false, false, true});
+    for (size_t i = 0; i < 2; ++i) {
+      strategies.push_back(strategies[i]);
+      strategies.back().sliceSparesSegments = false;
+    }
   }
   struct Run {
     std::unique_ptr<Triangulation> T;

@@ -28,6 +28,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   o.maxSteiner = 150;
   o.timeLimit = 1;
   if (o.mode == Mode::Quality && (data[0] & 64)) o.maxArea = 4;
+  // A high minimum angle (relocation and locally optimal points), also with the angle bounds.
+  if (data[0] & 128) o.minAngle = o.mode == Mode::Quality ? 40 : 25;
   int exponent = int(data[1] % 64) * 32 - 1024;  // 2^-1024 .. 2^992, in steps of 2^32
   if (!(data[1] & 64)) exponent = int(data[1] % 8) - 4;
   size_t n = std::min<size_t>(data[2], 40), at = 3;
