@@ -1502,6 +1502,8 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
       }
   } else if (options.mode == Mode::Acute) {
     strategies.push_back({false, false, true});
+    // Both again with the farthest point of the slice whatever it encroaches: on one CG:SHOP
+    // instance sparing the segments grades into a narrow wedge and ends a sliver short.
     for (size_t i = 0; i < 2; ++i) {
       strategies.push_back(strategies[i]);
       strategies.back().sliceSparesSegments = false;
