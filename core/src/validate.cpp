@@ -924,11 +924,21 @@ class Validator {
     size_t i = entriesAfter(w, k);
     if (i == w.entries.size()) return out.push_back({kNone, kNone});
     size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? kEntriesTried : 1));
-    for (; i < last; ++i) {
-      uint32_t next = w.entries[i];
+    for (size_t j = i; j < last; ++j) {
+      uint32_t next = w.entries[j];
       bool through = backtrack ? enteringTriangle(next, w.A) != kNone
                                : enteredThroughTriangle(next, w.A, name);
       if (!through) out.push_back({next, kNone});
+    }
+    // With b outside the mesh, a segment that left the domain may also end outside if every
+    // boundary vertex still ahead is only a rounding off it (crossing-rounded-onto-the-top-
+    // vertex: the segment touches the domain only at a, and the vertex an ulp below a, whose
+    // obtuse corner covers the direction to b, is no way back in).
+    if (backtrack && w.leaveAnywhere && rep_[w.b] == kNone) {
+      bool exactAhead = false;
+      for (size_t j = i; j < w.entries.size() && !exactAhead; ++j)
+        exactAhead = orient2d(w.A, w.B, P(w.entries[j])) == 0;
+      if (!exactAhead) out.push_back({kNone, kNone});
     }
   }
 
