@@ -568,9 +568,9 @@ void Refiner::releaseChords() {
     if (!T_.isFree(e / 3) && T_.isFixed(e) && !T_.isGhost(e / 3) && isChord(e)) T_.unfixEdge(e);
 }
 
-// The point of slice(pq) farthest from all vertices, pq the shortest edge of t: the best of
-// the Voronoi vertices (circumcentres) met walking from t's circumcentre while they stay in
-// the slice; each is as far from its nearest vertex as its triangle's circumradius.
+// The points of slice(pq), pq the shortest edge of t, farthest from all vertices first: the
+// Voronoi vertices (circumcentres) met walking from t's circumcentre while they stay in the
+// slice; each is as far from its nearest vertex as its triangle's circumradius.
 void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const {
   const uint32_t* v = &T_.tri[3 * t];
   int s = 0;
@@ -923,8 +923,10 @@ bool Refiner::slideInterval(double tp, double tq, const SegmentLine& line, doubl
 // link edge x->y of linkEdges_ is counter-clockwise with angles below the bound at x and y: p
 // left of x->y and inside its slab, (p-x).(y-x) > 0 and (p-y).(x-y) > 0 for 90 degrees; for a
 // bound below 90 the slab narrows to a wedge whose sides are x->y turned by the bound about x
-// (counter-clockwise) and about y (clockwise). Clipped from the bounding box of the edges'
-// ends; empty if there is no such point. (The angle at p is no half-plane: moveTo checks it.)
+// (counter-clockwise) and about y (clockwise). (Only for acute and non-obtuse; with a minimum
+// angle alpha, p also lies beyond x->y turned by alpha about x and about y: angles of at least
+// alpha there.) Clipped from the bounding box of the edges' ends; empty if there is no such
+// point. (The angle at p is no half-plane: moveTo checks it.)
 void Refiner::clipToLinkSlabs(bool wedges) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (const auto& edge : linkEdges_)
@@ -986,8 +988,9 @@ bool Refiner::clipCentroid(double* out) const {
 
 // Moves free vertex a (seed 2.2) to a point where every triangle of its star meets the
 // target, keeping the star's topology: the point must lie in the kernel of a's link and in
-// the slab of each link edge (angles at the link vertices below the bound), outside each link
-// edge's diametral disk (angle at a below 90). The slabs and the kernel are half-planes: their
+// the slab of each link edge (angles at the link vertices below the bound; with a minimum
+// angle, also at least that), outside each link edge's diametral disk (angle at a below 90).
+// The slabs and the kernel are half-planes: their
 // intersection is a convex polygon (clipToLinkSlabs); its centroid and points between it and
 // the corners are tried, and the first whose star passes the exact test is kept.
 bool Refiner::relocate(uint32_t a) {
