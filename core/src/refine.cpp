@@ -293,6 +293,9 @@ class Refiner {
   void slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const;
   std::vector<std::array<double, 3>> slicePoints_;
   void qualityPoint(uint32_t t, double* x) const;
+  int shortestEdgeCorner(uint32_t t) const;
+  template <class Keep, class Visit>
+  void walkVoronoi(uint32_t t, Keep keep, Visit visit) const;
   uint32_t addVertex(const double* p, VertexRole role, uint32_t fanCenter = kNone) {
     role_.push_back(role);
     fanCenter_.push_back(fanCenter);
@@ -568,26 +571,22 @@ void Refiner::releaseChords() {
     if (!T_.isFree(e / 3) && T_.isFixed(e) && !T_.isGhost(e / 3) && isChord(e)) T_.unfixEdge(e);
 }
 
-// The points of slice(pq), pq the shortest edge of t, farthest from all vertices first: the
-// Voronoi vertices (circumcentres) met walking from t's circumcentre while they stay in the
-// slice; each is as far from its nearest vertex as its triangle's circumradius.
-void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const {
+// The corner of t opposite its shortest edge.
+int Refiner::shortestEdgeCorner(uint32_t t) const {
   const uint32_t* v = &T_.tri[3 * t];
   int s = 0;
   for (int k = 1; k < 3; ++k)
     if (dist2(P(v[(k + 1) % 3]), P(v[(k + 2) % 3])) < dist2(P(v[(s + 1) % 3]), P(v[(s + 2) % 3])))
       s = k;
-  const double *p = P(v[(s + 1) % 3]), *q = P(v[(s + 2) % 3]);
-  double center[2];
-  circumcenter(P(v[0]), P(v[1]), P(v[2]), center);
-  double radius2 = dist2(center, p);
-  double ux = q[0] - p[0], uy = q[1] - p[1], len2 = ux * ux + uy * uy;
-  auto inSlice = [&](const double* c) {
-    double along = (c[0] - p[0]) * ux + (c[1] - p[1]) * uy;
-    return along > 0 && along < len2 && dist2(c, center) < radius2;
-  };
-  out.assign(1, {center[0], center[1], radius2});
-  // Breadth-first over a small neighbourhood of triangles whose circumcentres lie in the slice.
+  return s;
+}
+
+// A walk on the Voronoi diagram near t: breadth first over up to 64 triangles of the domain
+// reached from t across edges no segment lies on, through those whose circumcentre c passes
+// keep(c); visit(c, r2) for each of those (r2: its circumradius squared, the distance from c
+// to its nearest vertices).
+template <class Keep, class Visit>
+void Refiner::walkVoronoi(uint32_t t, Keep keep, Visit visit) const {
   uint32_t ring[64];
   size_t head = 0, count = 0;
   ring[count++] = t;
@@ -600,11 +599,30 @@ void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) c
       const uint32_t* w = &T_.tri[3 * n];
       double c[2];
       circumcenter(P(w[0]), P(w[1]), P(w[2]), c);
-      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !inSlice(c)) continue;
+      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !keep(c)) continue;
       ring[count++] = n;
-      out.push_back({c[0], c[1], dist2(c, P(w[0]))});
+      visit(c, dist2(c, P(w[0])));
     }
   }
+}
+
+// The points of slice(pq), pq the shortest edge of t, farthest from all vertices first: the
+// Voronoi vertices (circumcentres) met walking from t's circumcentre while they stay in the
+// slice; each is as far from its nearest vertex as its triangle's circumradius.
+void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const {
+  const uint32_t* v = &T_.tri[3 * t];
+  int s = shortestEdgeCorner(t);
+  const double *p = P(v[(s + 1) % 3]), *q = P(v[(s + 2) % 3]);
+  double center[2];
+  circumcenter(P(v[0]), P(v[1]), P(v[2]), center);
+  double radius2 = dist2(center, p);
+  double ux = q[0] - p[0], uy = q[1] - p[1], len2 = ux * ux + uy * uy;
+  auto inSlice = [&](const double* c) {
+    double along = (c[0] - p[0]) * ux + (c[1] - p[1]) * uy;
+    return along > 0 && along < len2 && dist2(c, center) < radius2;
+  };
+  out.assign(1, {center[0], center[1], radius2});
+  walkVoronoi(t, inSlice, [&](const double* c, double r2) { out.push_back({c[0], c[1], r2}); });
   // Insertion sort, farthest first, ties in the order found (a few dozen entries; the same
   // order in every standard library).
   for (size_t i = 1; i < out.size(); ++i)
@@ -621,10 +639,7 @@ void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) c
 // circumradius). Circumcentres alone (Ruppert) stop terminating near 34 degrees.
 void Refiner::qualityPoint(uint32_t t, double* x) const {
   const uint32_t* v = &T_.tri[3 * t];
-  int s = 0;
-  for (int k = 1; k < 3; ++k)
-    if (dist2(P(v[(k + 1) % 3]), P(v[(k + 2) % 3])) < dist2(P(v[(s + 1) % 3]), P(v[(s + 2) % 3])))
-      s = k;
+  int s = shortestEdgeCorner(t);
   const double *p = P(v[(s + 1) % 3]), *q = P(v[(s + 2) % 3]);
   double center[2];
   circumcenter(P(v[0]), P(v[1]), P(v[2]), center);
@@ -651,24 +666,10 @@ void Refiner::qualityPoint(uint32_t t, double* x) const {
     return (c[0] - mid[0]) * n[0] + (c[1] - mid[1]) * n[1] > 0 && atLeast(p, q, c) &&
            atLeast(q, c, p) && atLeast(c, p, q);
   };
-  uint32_t ring[64];
-  size_t head = 0, count = 0;
-  ring[count++] = t;
-  while (head < count) {
-    uint32_t u = ring[head++];
-    for (uint32_t e = 3 * u; e < 3 * u + 3; ++e) {
-      uint32_t nb = T_.opp[e] / 3;
-      if (T_.isFixed(e) || !T_.inside[nb] || T_.isGhost(nb) || count == 64) continue;
-      if (std::find(ring, ring + count, nb) != ring + count) continue;
-      const uint32_t* w = &T_.tri[3 * nb];
-      double c[2];
-      circumcenter(P(w[0]), P(w[1]), P(w[2]), c);
-      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !(dist2(c, center) < radius2)) continue;
-      ring[count++] = nb;
-      double r2 = dist2(c, P(w[0]));
-      if (r2 > best && inRegion(c)) best = r2, x[0] = c[0], x[1] = c[1];
-    }
-  }
+  auto inDisk = [&](const double* c) { return dist2(c, center) < radius2; };
+  walkVoronoi(t, inDisk, [&](const double* c, double r2) {
+    if (r2 > best && inRegion(c)) best = r2, x[0] = c[0], x[1] = c[1];
+  });
 }
 
 // Inserts x, found for triangle `from` (x lies in its circumdisk), unless it encroaches a
