@@ -32,6 +32,8 @@ constexpr double kDegree = M_PI / 180.0;
 // Quality refinement places new points where the angles they make are this much (degrees)
 // over the bound, so that rounding cannot leave them just under it.
 constexpr double kQualityRoom = 0.5;
+// Refinement to an area bound reserves room for the vertices it expects, up to this many.
+constexpr uint32_t kReservedVerticesAtMost = 1u << 21;
 // How many points of a slice are tried for one that encroaches no subsegment.
 constexpr size_t kSliceTries = 3;
 
@@ -169,8 +171,11 @@ class Refiner {
     if (steinerCap) cap = std::min(cap, double(steinerCap));
     steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, double(kMaxVertices)));
     if (options.maxArea > 0) {
-      // About one vertex per two triangles of a third of the bound's area, within the budget.
-      double vertices = std::min(double(steinerLimit_), T.vertexCount() + 1.6 * area / options.maxArea);
+      // About one vertex per two triangles of a third of the bound's area, within the budget,
+      // and no more than two million more: a bound far too small for the time limit must not
+      // reserve gigabytes up front (it took ASan over a minute).
+      double vertices = std::min({double(steinerLimit_), T.vertexCount() + 1.6 * area / options.maxArea,
+                                  T.vertexCount() + double(kReservedVerticesAtMost)});
       T.reserveCapacity(size_t(vertices), 2 * size_t(vertices) + 16);
       role_.reserve(size_t(vertices));
       fanCenter_.reserve(size_t(vertices));
