@@ -296,8 +296,9 @@ class Refiner {
   // Points of slice(pq) (pq the shortest edge of t), farthest from every vertex first: x, y
   // and that distance squared.
   void slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const;
-  std::vector<std::array<double, 3>> slicePoints_;
-  void qualityPoint(uint32_t t, double* x) const;
+  std::vector<std::array<double, 3>> candidates_;  // slicePoints / qualityPoints
+  void qualityPoints(uint32_t t, std::vector<std::array<double, 3>>& out) const;
+  bool insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points);
   int shortestEdgeCorner(uint32_t t) const;
   template <class Keep, class Visit>
   void walkVoronoi(uint32_t t, Keep keep, Visit visit) const;
@@ -576,6 +577,14 @@ void Refiner::releaseChords() {
     if (!T_.isFree(e / 3) && T_.isFixed(e) && !T_.isGhost(e / 3) && isChord(e)) T_.unfixEdge(e);
 }
 
+// Candidate points (x, y, squared distance to the nearest vertex), farthest first, ties in
+// the order found: an insertion sort (a few dozen entries; the same order in every standard
+// library).
+void sortFarthestFirst(std::vector<std::array<double, 3>>& points) {
+  for (size_t i = 1; i < points.size(); ++i)
+    for (size_t j = i; j > 0 && points[j - 1][2] < points[j][2]; --j) std::swap(points[j - 1], points[j]);
+}
+
 // The corner of t opposite its shortest edge.
 int Refiner::shortestEdgeCorner(uint32_t t) const {
   const uint32_t* v = &T_.tri[3 * t];
@@ -628,11 +637,9 @@ void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) c
   };
   out.assign(1, {center[0], center[1], radius2});
   walkVoronoi(t, inSlice, [&](const double* c, double r2) { out.push_back({c[0], c[1], r2}); });
-  // Insertion sort, farthest first, ties in the order found (a few dozen entries; the same
-  // order in every standard library).
-  for (size_t i = 1; i < out.size(); ++i)
-    for (size_t j = i; j > 0 && out[j - 1][2] < out[j][2]; --j) std::swap(out[j - 1], out[j]);
+  sortFarthestFirst(out);
 }
+
 
 // Quality refinement's Steiner point for t, which has an angle under the bound alpha (after
 // the seed's locally optimal Steiner points, Erten & Üngör 2009): with pq the shortest edge of
@@ -642,7 +649,7 @@ void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) c
 // circumcentre if that is nearer to pq) and the Voronoi vertices met walking from t's
 // circumcentre inside its circumdisk (each as far from every vertex as its triangle's
 // circumradius). Circumcentres alone (Ruppert) stop terminating near 34 degrees.
-void Refiner::qualityPoint(uint32_t t, double* x) const {
+void Refiner::qualityPoints(uint32_t t, std::vector<std::array<double, 3>>& out) const {
   const uint32_t* v = &T_.tri[3 * t];
   int s = shortestEdgeCorner(t);
   const double *p = P(v[(s + 1) % 3]), *q = P(v[(s + 2) % 3]);
@@ -657,12 +664,9 @@ void Refiner::qualityPoint(uint32_t t, double* x) const {
   const double cosBound = cosQuality_;
   double offHeight = 0.5 * len / std::sqrt((1 - cosBound) / (1 + cosBound));
   double centerHeight = (center[0] - mid[0]) * n[0] + (center[1] - mid[1]) * n[1];
-  if (centerHeight <= offHeight) {
-    x[0] = center[0], x[1] = center[1];
-  } else {
-    x[0] = mid[0] + offHeight * n[0], x[1] = mid[1] + offHeight * n[1];
-  }
-  double best = dist2(x, p);  // for the off-centre: an upper bound
+  double x[2] = {center[0], center[1]};
+  if (centerHeight > offHeight) x[0] = mid[0] + offHeight * n[0], x[1] = mid[1] + offHeight * n[1];
+  out.assign(1, {x[0], x[1], dist2(x, p)});  // (for the off-centre: an upper bound)
   auto atLeast = [&](const double* a, const double* b, const double* c) {  // angle bac
     double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
     return bx * cx + by * cy <= cosBound * std::sqrt((bx * bx + by * by) * (cx * cx + cy * cy));
@@ -673,8 +677,9 @@ void Refiner::qualityPoint(uint32_t t, double* x) const {
   };
   auto inDisk = [&](const double* c) { return dist2(c, center) < radius2; };
   walkVoronoi(t, inDisk, [&](const double* c, double r2) {
-    if (r2 > best && inRegion(c)) best = r2, x[0] = c[0], x[1] = c[1];
+    if (inRegion(c)) out.push_back({c[0], c[1], r2});
   });
+  sortFarthestFirst(out);
 }
 
 // Inserts x, found for triangle `from` (x lies in its circumdisk), unless it encroaches a
@@ -1075,20 +1080,27 @@ bool Refiner::repair(uint32_t t, Corner c) {
     // The farthest point of the slice; but one that encroaches a subsegment would split it,
     // and next to a sliver each split starts a chain of feet across it: a point of the slice
     // that encroaches nothing goes first, if there is one.
-    std::vector<std::array<double, 3>>& points = slicePoints_;
-    slicePoints(t, points);
-    for (size_t i = 0; strategy_.sliceSparesSegments && i < points.size() && i < kSliceTries; ++i)
-      if (examineCavity(t, points[i].data()).encroached == kNone && insertSteiner(t, points[i].data()))
-        return true;
-    return insertSteiner(t, points[0].data());
+    slicePoints(t, candidates_);
+    return insertSparingSegments(t, candidates_);
+  }
+  if (!c.area) {
+    qualityPoints(t, candidates_);
+    return insertSparingSegments(t, candidates_);
   }
   const uint32_t* v = &T_.tri[3 * t];
   double x[2];
-  if (c.area)
-    circumcenter(P(v[0]), P(v[1]), P(v[2]), x);
-  else
-    qualityPoint(t, x);
+  circumcenter(P(v[0]), P(v[1]), P(v[2]), x);
   return insertSteiner(t, x);
+}
+
+// Inserts the first of the candidate points for t (best first) whose cavity's rim holds no
+// subsegment it encroaches, of the first kSliceTries (Strategy::sliceSparesSegments), else the
+// best, letting insertSteiner split what it encroaches.
+bool Refiner::insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points) {
+  for (size_t i = 0; strategy_.sliceSparesSegments && i < points.size() && i < kSliceTries; ++i)
+    if (examineCavity(t, points[i].data()).encroached == kNone && insertSteiner(t, points[i].data()))
+      return true;
+  return insertSteiner(t, points[0].data());
 }
 
 // Size of a triangle for the processing order: its shortest edge, squared.
