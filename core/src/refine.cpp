@@ -641,10 +641,11 @@ void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) c
 }
 
 
-// Quality refinement's Steiner point for t, which has an angle under the bound alpha (after
-// the seed's locally optimal Steiner points, Erten & Üngör 2009): with pq the shortest edge of
-// t, the point of the region where p, q, x would make a triangle with every angle at least
-// alpha, inside t's circumdisk (so that t goes), farthest from all vertices. Candidates are
+// Quality refinement's Steiner points for t, which has an angle under the bound alpha (after
+// the seed's locally optimal Steiner points, Erten & Üngör 2009), best first: with pq the
+// shortest edge of t, points of the region where p, q, x would make a triangle with every
+// angle at least alpha, inside t's circumdisk (so that t goes), farthest from all vertices
+// first (insertSparingSegments takes the first that spares the segments). Candidates are
 // Üngör's off-centre (on pq's bisector where the angle at x is a little over alpha; the
 // circumcentre if that is nearer to pq) and the Voronoi vertices met walking from t's
 // circumcentre inside its circumdisk (each as far from every vertex as its triangle's
@@ -682,8 +683,6 @@ void Refiner::qualityPoints(uint32_t t, std::vector<std::array<double, 3>>& out)
   sortFarthestFirst(out);
 }
 
-// Inserts x, found for triangle `from` (x lies in its circumdisk), unless it encroaches a
-// subsegment or lies beyond one: then that subsegment is split instead.
 Refiner::CavityRim Refiner::examineCavity(uint32_t from, const double* x) {
   // The cavity: triangles reachable from `from` without crossing a fixed edge whose
   // circumcircle holds x. Fixed edges on its rim are the subsegments x could encroach.
@@ -712,6 +711,8 @@ Refiner::CavityRim Refiner::examineCavity(uint32_t from, const double* x) {
   return {encroached, beyond};
 }
 
+// Inserts x, found for triangle `from` (x lies in its circumdisk), unless it encroaches a
+// subsegment or lies beyond one: then that subsegment is split instead.
 bool Refiner::insertSteiner(uint32_t from, const double* x) {
   if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
   auto [encroached, beyond] = examineCavity(from, x);
