@@ -80,7 +80,7 @@ export interface MeshOptions {
   convexHull?: boolean;
   /** Degrees; acute mode: every angle < maxAngle (60 < maxAngle <= 90; default 90, exact). */
   maxAngle?: number;
-  /** Degrees; smallest angle wanted (quality mode: default 20). */
+  /** Degrees; smallest angle wanted (quality mode: default 20; 0 <= minAngle < 60, terminates up to about 40). */
   minAngle?: number;
   /** Largest triangle area wanted (0: none). */
   maxArea?: number;
