@@ -233,12 +233,14 @@ class Refiner {
   void cutAtFeet();
   bool splitAtFoot(uint32_t t, int k);
   void releaseChords();
-  bool insertSteiner(uint32_t from, const double* x);
   // The subsegment on the rim of x's cavity (seen from triangle `from`) that x encroaches,
   // the longest if several, and the first fixed edge x lies beyond; kNone where none.
   struct CavityRim {
     uint32_t encroached, beyond;
   };
+  bool insertSteiner(uint32_t from, const double* x);
+  // The same with x's cavity just examined (rim: examineCavity's answer, cavity_ its cavity).
+  bool insertSteiner(uint32_t from, const double* x, CavityRim rim);
   CavityRim examineCavity(uint32_t from, const double* x);
   uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
   bool relocate(uint32_t a);
@@ -299,7 +301,12 @@ class Refiner {
   std::vector<std::array<double, 3>> candidates_;  // slicePoints / qualityPoints
   void qualityPoints(uint32_t t, std::vector<std::array<double, 3>>& out) const;
   bool insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points);
-  int shortestEdgeCorner(uint32_t t) const;
+  // Triangle t's shortest edge pq and its circumcircle: where the Steiner point searches start.
+  struct ShortestEdge {
+    const double *p, *q;
+    double center[2], radius2;
+  };
+  ShortestEdge shortestEdge(uint32_t t) const;
   template <class Keep, class Visit>
   void walkVoronoi(uint32_t t, Keep keep, Visit visit) const;
   uint32_t addVertex(const double* p, VertexRole role, uint32_t fanCenter = kNone) {
@@ -585,14 +592,16 @@ void sortFarthestFirst(std::vector<std::array<double, 3>>& points) {
     for (size_t j = i; j > 0 && points[j - 1][2] < points[j][2]; --j) std::swap(points[j - 1], points[j]);
 }
 
-// The corner of t opposite its shortest edge.
-int Refiner::shortestEdgeCorner(uint32_t t) const {
+Refiner::ShortestEdge Refiner::shortestEdge(uint32_t t) const {
   const uint32_t* v = &T_.tri[3 * t];
   int s = 0;
   for (int k = 1; k < 3; ++k)
     if (dist2(P(v[(k + 1) % 3]), P(v[(k + 2) % 3])) < dist2(P(v[(s + 1) % 3]), P(v[(s + 2) % 3])))
       s = k;
-  return s;
+  ShortestEdge e{P(v[(s + 1) % 3]), P(v[(s + 2) % 3]), {0, 0}, 0};
+  circumcenter(P(v[0]), P(v[1]), P(v[2]), e.center);
+  e.radius2 = dist2(e.center, e.p);
+  return e;
 }
 
 // A walk on the Voronoi diagram near t: breadth first over up to 64 triangles of the domain
@@ -624,12 +633,9 @@ void Refiner::walkVoronoi(uint32_t t, Keep keep, Visit visit) const {
 // Voronoi vertices (circumcentres) met walking from t's circumcentre while they stay in the
 // slice; each is as far from its nearest vertex as its triangle's circumradius.
 void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const {
-  const uint32_t* v = &T_.tri[3 * t];
-  int s = shortestEdgeCorner(t);
-  const double *p = P(v[(s + 1) % 3]), *q = P(v[(s + 2) % 3]);
-  double center[2];
-  circumcenter(P(v[0]), P(v[1]), P(v[2]), center);
-  double radius2 = dist2(center, p);
+  const ShortestEdge edge = shortestEdge(t);
+  const double *p = edge.p, *q = edge.q, *center = edge.center;
+  const double radius2 = edge.radius2;
   double ux = q[0] - p[0], uy = q[1] - p[1], len2 = ux * ux + uy * uy;
   auto inSlice = [&](const double* c) {
     double along = (c[0] - p[0]) * ux + (c[1] - p[1]) * uy;
@@ -651,12 +657,9 @@ void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) c
 // circumcentre inside its circumdisk (each as far from every vertex as its triangle's
 // circumradius). Circumcentres alone (Ruppert) stop terminating near 34 degrees.
 void Refiner::qualityPoints(uint32_t t, std::vector<std::array<double, 3>>& out) const {
-  const uint32_t* v = &T_.tri[3 * t];
-  int s = shortestEdgeCorner(t);
-  const double *p = P(v[(s + 1) % 3]), *q = P(v[(s + 2) % 3]);
-  double center[2];
-  circumcenter(P(v[0]), P(v[1]), P(v[2]), center);
-  double radius2 = dist2(center, p);
+  const ShortestEdge edge = shortestEdge(t);
+  const double *p = edge.p, *q = edge.q, *center = edge.center;
+  const double radius2 = edge.radius2;
   // pq's bisector, pointing to t's side (t is counter-clockwise: left of p->q).
   double ux = q[0] - p[0], uy = q[1] - p[1], len = std::sqrt(ux * ux + uy * uy);
   double mid[2] = {0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])}, n[2] = {-uy / len, ux / len};
@@ -715,7 +718,11 @@ Refiner::CavityRim Refiner::examineCavity(uint32_t from, const double* x) {
 // subsegment or lies beyond one: then that subsegment is split instead.
 bool Refiner::insertSteiner(uint32_t from, const double* x) {
   if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
-  auto [encroached, beyond] = examineCavity(from, x);
+  return insertSteiner(from, x, examineCavity(from, x));
+}
+
+bool Refiner::insertSteiner(uint32_t from, const double* x, CavityRim rim) {
+  auto [encroached, beyond] = rim;
   if (encroached != kNone) return splitSubsegment(encroached);
   Location loc = T_.locate(x, from);
   if (loc.where == Where::Failed || loc.where == Where::OnVertex) return false;
@@ -1099,8 +1106,10 @@ bool Refiner::repair(uint32_t t, Corner c) {
 // best, letting insertSteiner split what it encroaches.
 bool Refiner::insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points) {
   for (size_t i = 0; strategy_.sliceSparesSegments && i < points.size() && i < kSliceTries; ++i)
-    if (examineCavity(t, points[i].data()).encroached == kNone && insertSteiner(t, points[i].data()))
-      return true;
+    if (std::isfinite(points[i][0]) && std::isfinite(points[i][1])) {
+      CavityRim rim = examineCavity(t, points[i].data());
+      if (rim.encroached == kNone && insertSteiner(t, points[i].data(), rim)) return true;
+    }
   return insertSteiner(t, points[0].data());
 }
 
