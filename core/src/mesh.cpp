@@ -9,6 +9,7 @@
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "portable_math.h"
 
 namespace acutemesh {
 namespace {
@@ -148,8 +149,8 @@ double smallestInputAngle(const Pslg& in) {
     uint32_t a = in.segments[2 * s], b = in.segments[2 * s + 1];
     double dx = in.points[2 * b] - in.points[2 * a], dy = in.points[2 * b + 1] - in.points[2 * a + 1];
     if (dx == 0 && dy == 0) continue;
-    ends.push_back({a, std::atan2(dy, dx)});
-    ends.push_back({b, std::atan2(-dy, -dx)});
+    ends.push_back({a, detail::portableAtan2(dy, dx)});
+    ends.push_back({b, detail::portableAtan2(-dy, -dx)});
   }
   std::sort(ends.begin(), ends.end());
   double smallest = M_PI;
@@ -187,7 +188,7 @@ void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats
 // The output triangles that miss the refinement target (the first kMaxMissedListed), for
 // Stats::missedTriangles: exact at 90 degrees, floating point for other bounds.
 void listMissedTriangles(const Options& options, const Mesh& mesh, Stats& stats) {
-  const double cosMax = std::cos(options.maxAngle * M_PI / 180), cosMin = std::cos(options.minAngle * M_PI / 180);
+  const double cosMax = detail::portableCos(options.maxAngle * M_PI / 180), cosMin = detail::portableCos(options.minAngle * M_PI / 180);
   stats.missedTriangles.clear();
   for (size_t t = 0; t < mesh.triangleCount() && stats.missedTriangles.size() < kMaxMissedListed; ++t) {
     const double* p[3];

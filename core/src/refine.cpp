@@ -23,6 +23,7 @@
 
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "portable_math.h"
 #include "rounding.h"
 
 namespace acutemesh::detail {
@@ -65,8 +66,8 @@ void circumcenter(const double* a, const double* b, const double* c, double* out
 
 // The WebAssembly build must make the very meshes the native one makes, and the two link
 // different maths libraries: hypot, pow, exp2 and log2 need not round alike there (only +, -,
-// *, / and sqrt are exact IEEE operations). So constructions use those alone, save the corner
-// fans' directions and arc points (atan2, cos, sin): a gap the wasm/native test has not hit.
+// *, / and sqrt are exact IEEE operations). So constructions use those alone (sin, cos and
+// atan2 too: portable_math.h).
 // The power of two nearest x > 0 in the log scale: round(log2 x), from x's exponent and
 // whether its mantissa m (x = m 2^e, 0.5 <= m < 1) is at least sqrt(1/2).
 double powerOfTwoNear(double x) {
@@ -154,10 +155,10 @@ class Refiner {
     fanRadius_.assign(inputCount, 0);
     acute_ = options.mode == Mode::Acute;
     nonObtuse_ = options.mode == Mode::NonObtuse;
-    cosMax_ = std::cos(options.maxAngle * kDegree);
+    cosMax_ = portableCos(options.maxAngle * kDegree);
     strictMax_ = acute_ && options.maxAngle < 90;
-    cosMin_ = std::cos(options.minAngle * kDegree);
-    cosQuality_ = std::cos(std::min(options.minAngle + kQualityRoom, 60.0) * kDegree);
+    cosMin_ = portableCos(options.minAngle * kDegree);
+    cosQuality_ = portableCos(std::min(options.minAngle + kQualityRoom, 60.0) * kDegree);
     // Without a budget from the caller: 50 points per input vertex, at least 20000, and with
     // an area bound room for about two triangles of that area per unit of domain area.
     double cap = std::max(20000.0, 50.0 * inputCount), area = 0;
@@ -485,7 +486,7 @@ double Refiner::readStar(uint32_t v) {
     bool inside = T_.inside[t] && !T_.isGhost(t);
     if (T_.isFixed(e)) {
       const double* pu = P(T_.tri[next(e)]);
-      spokes_.push_back({T_.tri[next(e)], std::atan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
+      spokes_.push_back({T_.tri[next(e)], portableAtan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
     }
     bool bad = inside && worstCorner(t).k >= 0;
     (spokes_.empty() ? badBeforeFirst : spokes_.back().sectorBad) |= bad;
@@ -551,7 +552,9 @@ void Refiner::buildFan(uint32_t v, double r) {
     ring.assign(1, shell[i]);
     for (int k = 1; k < pieces; ++k) {
       double a = spokes_[i].direction + angle * k / pieces;
-      double x[2] = {pv[0] + r * std::cos(a), pv[1] + r * std::sin(a)};
+      double sine, cosine;
+      portableSinCos(a, sine, cosine);
+      double x[2] = {pv[0] + r * cosine, pv[1] + r * sine};
       uint32_t w = addVertex(x, kArc, v);
       Location loc = T_.locate(x, T_.vertexEdge[v] / 3);
       if (loc.where == Where::InTriangle && T_.inside[loc.tri] && T_.insertAt(w, loc) == w) {

@@ -13,6 +13,7 @@
 
 #include "acutemesh/predicates.h"
 #include "exact_reference.h"
+#include "portable_math.h"
 
 namespace {
 
@@ -560,6 +561,44 @@ TEST(Predicates, ExtremeMagnitudes) {
     }
   }
   EXPECT_CLEAN(chk, 20000);
+}
+
+// sin, cos and atan2 built from +, -, *, / (portable_math.h): close to the maths library's,
+// and the same bits in every build (the values below are pinned, so the WebAssembly run of
+// this suite checks that its build rounds them exactly as the native one does).
+TEST(PortableMath, CloseToTheMathsLibrary) {
+  using namespace acutemesh::detail;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(-7, 7), coordinate(-1e3, 1e3);
+  for (int i = 0; i < 200000; ++i) {
+    double x = angle(rng), s = 0, c = 0;
+    portableSinCos(x, s, c);
+    ASSERT_NEAR(s, std::sin(x), 4e-16) << x;
+    ASSERT_NEAR(c, std::cos(x), 4e-16) << x;
+    double y = coordinate(rng), z = coordinate(rng);
+    if (i % 5 == 0) y = 0;
+    if (i % 7 == 0) z = 0;
+    if (i % 11 == 0) y = z;
+    ASSERT_NEAR(portableAtan2(y, z), std::atan2(y, z), 8e-16) << y << " " << z;
+  }
+  EXPECT_EQ(portableAtan2(0, 0), 0);
+  EXPECT_EQ(portableAtan2(0, -1), M_PI);
+  EXPECT_EQ(portableAtan2(1, 0), M_PI / 2);
+  EXPECT_EQ(portableAtan2(-1, -1), -3 * M_PI / 4);
+}
+
+TEST(PortableMath, SameBitsInEveryBuild) {
+  using namespace acutemesh::detail;
+  double s = 0, c = 0;
+  portableSinCos(1.0, s, c);
+  EXPECT_EQ(s, 0x1.aed548f090ceep-1);
+  EXPECT_EQ(c, 0x1.14a280fb5068cp-1);
+  portableSinCos(-5.5, s, c);
+  EXPECT_EQ(s, 0x1.693c94e0ab057p-1);
+  EXPECT_EQ(c, 0x1.6ad6c3c07d448p-1);
+  EXPECT_EQ(portableAtan2(1, 2), 0x1.dac670561bb5p-2);
+  EXPECT_EQ(portableAtan2(-3, -0.25), -0x1.a76873ac2bc7cp+0);
+  EXPECT_EQ(portableCos(89.5 * M_PI / 180), 0x1.1df37c4954c0bp-7);
 }
 
 }  // namespace
