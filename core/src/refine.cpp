@@ -659,15 +659,20 @@ void Refiner::walkVoronoi(uint32_t t, Keep keep, Visit visit) const {
 
 // The points of slice(pq), pq the shortest edge of t, farthest from all vertices first: the
 // Voronoi vertices (circumcentres) met walking from t's circumcentre while they stay in the
-// slice; each is as far from its nearest vertex as its triangle's circumradius.
+// slice (or in t's circumdisk, see below); each is as far from its nearest vertex as its
+// triangle's circumradius.
 void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) const {
   const ShortestEdge edge = shortestEdge(t);
   const double *p = edge.p, *q = edge.q, *center = edge.center;
   const double radius2 = edge.radius2;
   double ux = q[0] - p[0], uy = q[1] - p[1], len2 = ux * ux + uy * uy;
+  // Where the candidates are weighed (sliceSparesSegments: insertSparingSegments counts the
+  // bad triangles each leaves), those of t's whole circumdisk compete, not only the slice's
+  // (CG:SHOP non-obtuse 34,596 -> 33,313 Steiner points, acute 61,129 -> 58,600).
+  const bool wholeDisk = strategy_.sliceSparesSegments;
   auto inSlice = [&](const double* c) {
     double along = (c[0] - p[0]) * ux + (c[1] - p[1]) * uy;
-    return along > 0 && along < len2 && dist2(c, center) < radius2;
+    return (wholeDisk || (along > 0 && along < len2)) && dist2(c, center) < radius2;
   };
   out.assign(1, {center[0], center[1], radius2});
   walkVoronoi(t, inSlice, [&](const double* c, double r2) { out.push_back({c[0], c[1], r2}); });
