@@ -235,6 +235,7 @@ class Refiner {
   // Splits at `preferred` (a fraction of the way from the edge's first end) when given and
   // well inside, else by the shell rule.
   bool splitSubsegment(uint32_t e, double preferred = -1);
+  double shellRatio(uint32_t e) const;
   bool splitChord(uint32_t e);
   void buildCornerFans();
   double readStar(uint32_t v);
@@ -250,6 +251,8 @@ class Refiner {
   std::vector<Spoke> spokes_;
   void cutAtFeet();
   bool splitAtFoot(uint32_t t, int k);
+  bool splitWeighed(uint32_t e, const double* apex);
+  int splitBadChange(uint32_t e, const double* m);
   void releaseChords();
   // The subsegment on the rim of x's cavity (seen from triangle `from`) that x encroaches,
   // the longest if several, and the first fixed edge x lies beyond; kNone where none.
@@ -410,20 +413,24 @@ Corner Refiner::worstCorner(const double* const p[3]) const {
   return {};
 }
 
-// Splits the subsegment of fixed half-edge e. Next to an input vertex the split lies at a
-// power of two from it (concentric shells); otherwise at the midpoint.
+// Where (a fraction of the way from its first end) the subsegment of fixed half-edge e is split
+// by default: next to an input vertex at a power of two from it (concentric shells), otherwise
+// at the midpoint.
+double Refiner::shellRatio(uint32_t e) const {
+  uint32_t a = T_.tri[e], b = T_.tri[next(e)];
+  if ((role_[a] == kInput) == (role_[b] == kInput)) return 0.5;
+  double len = std::sqrt(dist2(P(a), P(b))), shell = powerOfTwoNear(len / 2);
+  return role_[a] == kInput ? shell / len : 1 - shell / len;
+}
+
+// Splits the subsegment of fixed half-edge e, at shellRatio() unless `preferred` is given.
 bool Refiner::splitSubsegment(uint32_t e, double preferred) {
   if (isChord(e)) return splitChord(e);
   uint32_t a = T_.tri[e], b = T_.tri[next(e)];
   // Copies: adding a vertex may move the coordinate array.
   const double pa[2] = {P(a)[0], P(a)[1]}, pb[2] = {P(b)[0], P(b)[1]};
   if (dist2(pa, pb) < 4 * minEdge2_) return false;
-  double len = std::sqrt(dist2(pa, pb)), s = 0.5;
-  if ((role_[a] == kInput) != (role_[b] == kInput)) {
-    double shell = powerOfTwoNear(len / 2);
-    s = role_[a] == kInput ? shell / len : 1 - shell / len;
-  }
-  if (preferred > 0.01 && preferred < 0.99) s = preferred;
+  double s = preferred > 0.01 && preferred < 0.99 ? preferred : shellRatio(e);
   uint32_t seg = T_.segment[e];
   SegmentLine line = segmentLine(seg, pa, pb);
   double ta = line.param(pa), tb = line.param(pb);
@@ -1117,6 +1124,8 @@ bool Refiner::repair(uint32_t t, Corner c) {
   if (c.large) {
     // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
     uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
+    if (strategy_.sliceSparesSegments && T_.isFixed(opposite) && !isChord(opposite))
+      return splitWeighed(opposite, P(T_.tri[3 * t + c.k]));
     if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) return splitAtFoot(t, c.k);
     if (T_.isFixed(opposite)) return splitSubsegment(opposite);
     // The farthest point of the slice; but one that encroaches a subsegment would split it,
@@ -1197,6 +1206,68 @@ bool Refiner::splitAtFoot(uint32_t t, int k) {
   double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
   double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
   return splitSubsegment(opposite, s);
+}
+
+// How many more triangles miss the target once m splits the subsegment of fixed half-edge e:
+// the cavities on both sides give way to triangles joining m to their rims.
+int Refiner::splitBadChange(uint32_t e, const double* m) {
+  cavity_.clear();
+  for (uint32_t side : {e, T_.opp[e]}) {
+    uint32_t t = side / 3;
+    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t)) cavity_.push_back(t);
+  }
+  for (size_t i = 0; i < cavity_.size() && cavity_.size() <= kCavityExamined; ++i)
+    for (uint32_t f = 3 * cavity_[i]; f < 3 * cavity_[i] + 3; ++f) {
+      uint32_t n = T_.opp[f] / 3;
+      if (T_.isFixed(f) || T_.isGhost(n) || !T_.inside[n] ||
+          std::find(cavity_.begin(), cavity_.end(), n) != cavity_.end())
+        continue;
+      const uint32_t* w = &T_.tri[3 * n];
+      if (incircle(P(w[0]), P(w[1]), P(w[2]), m) > 0) cavity_.push_back(n);
+    }
+  int change = 0;
+  for (uint32_t t : cavity_) {
+    change -= worstCorner(t).k >= 0;
+    for (uint32_t f = 3 * t; f < 3 * t + 3; ++f) {
+      if (f == e || f == T_.opp[e]) continue;
+      uint32_t n = T_.opp[f] / 3;
+      bool rim = T_.isFixed(f) || T_.isGhost(n) ||
+                 std::find(cavity_.begin(), cavity_.end(), n) == cavity_.end();
+      if (!rim) continue;
+      const double* p[3] = {m, P(T_.tri[f]), P(T_.tri[next(f)])};
+      change += worstCorner(p).k >= 0;
+    }
+  }
+  return change;
+}
+
+// The boundary rule with the split point weighed (where slice points are weighed too,
+// Strategy::sliceSparesSegments): of the usual place (shell or midpoint; with
+// Strategy::footOnSegments the foot of the altitude), the foot of the altitude from apex and
+// the tenths of the subsegment, the one that leaves the fewest bad triangles (splitBadChange;
+// ties to the earlier). CG:SHOP non-obtuse 32,945 -> 30,664 Steiner points, acute 58,109 ->
+// 47,382 (usual, middle, foot and thirds only: 31,263 and 48,805). Splits for a point that
+// encroaches a subsegment stay as they were (weighed: 34,037 and 52,832).
+bool Refiner::splitWeighed(uint32_t e, const double* apex) {
+  const double *pa = P(T_.tri[e]), *pb = P(T_.tri[next(e)]), *pc = apex;
+  double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
+  double foot = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
+  double usual = nonObtuse_ && strategy_.footOnSegments ? foot : -1;
+  SegmentLine line = segmentLine(T_.segment[e], pa, pb);
+  double ta = line.param(pa), tb = line.param(pb);
+  double best = usual;
+  int fewest = INT32_MAX;
+  const double ratios[] = {usual, foot, 0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9};
+  for (size_t i = 0; i < std::size(ratios); ++i) {
+    double r = ratios[i];
+    if (i > 0 && (r == usual || !(r > 0.05 && r < 0.95))) continue;
+    double ratio = r > 0.01 && r < 0.99 ? r : shellRatio(e);  // as splitSubsegment decides
+    double m[2];
+    line.at(ta + ratio * (tb - ta), m);
+    int change = splitBadChange(e, m);
+    if (change < fewest) fewest = change, best = r;
+  }
+  return splitSubsegment(e, best);
 }
 
 // Non-obtuse: a triangle obtuse opposite a subsegment is cut at the foot of its altitude into
