@@ -95,6 +95,7 @@ Options optionsFromJs(const val& o) {
   opt.mode = Mode(o["mode"].as<int>());
   opt.fill = FillRule(o["fill"].as<int>());
   opt.convexHull = o["convexHull"].as<bool>();
+  opt.exactSegments = o["exactSegments"].as<bool>();
   opt.maxAngle = o["maxAngle"].as<double>();
   opt.minAngle = o["minAngle"].as<double>();
   opt.maxArea = o["maxArea"].as<double>();

@@ -44,6 +44,9 @@ options:
                        evenodd:  regions inside an odd number of rings (default for JSON rings)
                        nonzero:  regions with non-zero winding number (segments are directed)
   --convex-hull        keep every triangle of the convex hull (hole points still apply)
+  --exact-segments     put Steiner points exactly on their segments' lines where a representable
+                       point is near (integer coordinates), not within rounding of them (more
+                       points; always on for CG:SHOP input, whose verifier is exact)
   --time-limit S       give up after S seconds (exit status 1)
   --stats              print one JSON object of figures on stdout
   --no-output          compute, write nothing (for timing)
@@ -233,6 +236,8 @@ static int run(int argc, char** argv) {
       fillGiven = true;
     } else if (a == "--convex-hull") {
       opt.convexHull = true;
+    } else if (a == "--exact-segments") {
+      opt.exactSegments = true;
     } else if (a == "--time-limit") {
       char* end = nullptr;
       if (!value(v)) return usageError("--time-limit needs seconds");
@@ -265,6 +270,9 @@ static int run(int argc, char** argv) {
     return usageError("--format cgshop needs a CG:SHOP 2025 instance as input (.json with "
                       "\"points_x\"), and " + input + " is not one");
   if (!fillGiven && in.hasRings) opt.fill = FillRule::EvenOdd;
+  // The CG:SHOP verifier is exact: a split point an ulp off its segment would leave a sliver
+  // between the segment and the mesh's edges.
+  if (in.format == InputFormat::CgshopInstance) opt.exactSegments = true;
 
   // On a terminal, runs longer than a second show where they are, on one stderr line.
   bool progressShown = false;

@@ -273,12 +273,27 @@ class Refiner {
   // segment are made from it, by their parameter along it, never from rounded points on it,
   // so rounding does not accumulate along a segment.
   struct SegmentLine {
-    const double* start;
+    const double *start, *end;
     double ux, uy, u2;
     double param(const double* x) const {
       return ((x[0] - start[0]) * ux + (x[1] - start[1]) * uy) / u2;
     }
-    void at(double t, double* out) const { out[0] = start[0] + t * ux, out[1] = start[1] + t * uy; }
+    // With `exact` (Options::exactSegments) t moves to the nearest parameter with few enough
+    // bits that the point lies exactly on the line, if there is one within 2^-24 of the
+    // segment's length (there is for integer coordinates): the finest such.
+    bool exact = false;
+    void at(double t, double* out) const {
+      out[0] = start[0] + t * ux, out[1] = start[1] + t * uy;
+      if (!exact || orient2d(start, end, out) == 0) return;
+      for (int bits = 60; bits >= 24; bits -= 2) {
+        double s = std::ldexp(std::nearbyint(std::ldexp(t, bits)), -bits);
+        double m[2] = {start[0] + s * ux, start[1] + s * uy};
+        if (orient2d(start, end, m) == 0) {
+          out[0] = m[0], out[1] = m[1];
+          return;
+        }
+      }
+    }
   };
   SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
   bool slideInterval(double tp, double tq, const SegmentLine& line, double& t);
@@ -850,7 +865,7 @@ Refiner::SegmentLine Refiner::segmentLine(uint32_t seg, const double* p, const d
     B = &input_.points[2 * size_t(input_.segments[2 * size_t(seg) + 1])];
   }
   double ux = B[0] - A[0], uy = B[1] - A[1];
-  return {A, ux, uy, ux * ux + uy * uy};
+  return {A, B, ux, uy, ux * ux + uy * uy, options_.exactSegments};
 }
 
 // Puts vertex a at (x, y); true if its star (link in ring_) stays a valid triangulation

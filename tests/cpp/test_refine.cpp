@@ -211,9 +211,22 @@ void expectEveryCgshopInstanceSolved(Mode mode) {
     Pslg in = load(path);
     Options o;
     o.mode = mode;
+    o.exactSegments = true;  // as the CLI meshes CG:SHOP input: the verifier is exact
     Result r = mesh(in, o);
     ASSERT_NE(r.status, Status::BadInput) << path << ": " << r.message;
     expectValid(in, o, r, path);
+    // Every Steiner point on a segment lies exactly on it (integer coordinates allow it).
+    for (size_t v = 0; v < r.mesh.vertexCount(); ++v) {
+      if (r.mesh.vertexKind[v] != kSegmentVertex) continue;
+      const double* p = &r.mesh.points[2 * v];
+      bool on = false;
+      for (size_t s = 0; s < in.segmentCount() && !on; ++s) {
+        const double* a = &in.points[2 * size_t(in.segments[2 * s])];
+        const double* b = &in.points[2 * size_t(in.segments[2 * s + 1])];
+        on = orient2d(a, b, p) == 0 && dot2d(p, a, b) < 0;
+      }
+      EXPECT_TRUE(on) << path << ": vertex " << v << " is off its segment";
+    }
     size_t nonAcute, obtuse;
     countCorners(r.mesh, &nonAcute, &obtuse);
     size_t missed = mode == Mode::Acute ? nonAcute : obtuse;

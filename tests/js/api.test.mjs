@@ -85,6 +85,23 @@ for (const path of fixtures()) {
   });
 }
 
+// Whether (x, y) lies exactly on one of pslg's segments: cross products in BigInt, of the
+// coordinates scaled by 2^64 (exact for the dyadic Steiner points of integer inputs).
+function onSomeSegmentExactly(pslg, x, y) {
+  const big = (v) => BigInt(v * 2 ** 64);
+  const p = [big(x), big(y)];
+  for (let s = 0; s < pslg.segments.length; s += 2) {
+    const a = pslg.segments[s], b = pslg.segments[s + 1];
+    const A = [big(pslg.points[2 * a]), big(pslg.points[2 * a + 1])];
+    const B = [big(pslg.points[2 * b]), big(pslg.points[2 * b + 1])];
+    const cross = (B[0] - A[0]) * (p[1] - A[1]) - (B[1] - A[1]) * (p[0] - A[0]);
+    const dot = (p[0] - A[0]) * (B[0] - A[0]) + (p[1] - A[1]) * (B[1] - A[1]);
+    const len2 = (B[0] - A[0]) ** 2n + (B[1] - A[1]) ** 2n;
+    if (cross === 0n && dot > 0n && dot < len2) return true;
+  }
+  return false;
+}
+
 test('a few CG:SHOP 2025 instances: parsed, constrained, non-obtuse or honestly not', async () => {
   const { readdirSync } = await import('node:fs');
   const { join } = await import('node:path');
@@ -95,9 +112,14 @@ test('a few CG:SHOP 2025 instances: parsed, constrained, non-obtuse or honestly 
   for (const f of files.filter((_, i) => i % 15 === 0)) {
     const inst = load(am, join(dir, f));
     assert.equal(typeof inst.instanceUid, 'string');
-    const m = am.mesh(inst, { mode: 'nonobtuse', timeLimit: 10 });
+    const m = am.mesh(inst, { mode: 'nonobtuse', timeLimit: 10, exactSegments: true });
     checkShape(inst, m);
     checkValid(inst, m);
+    assert.equal(m.options.exactSegments, true);
+    // The verifier is exact: every Steiner point on a segment lies exactly on it.
+    for (let v = 0; v < m.vertexKind.length; ++v)
+      if (m.vertexKind[v] === 2)
+        assert.ok(onSomeSegmentExactly(inst, m.points[2 * v], m.points[2 * v + 1]), `${f}: vertex ${v} is off its segment`);
     assert.equal(m.stats.obtuse === 0, m.stats.certified);
     const solution = JSON.parse(am.toCgshop(m, inst));
     assert.equal(solution.instance_uid, inst.instanceUid);

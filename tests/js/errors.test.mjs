@@ -62,6 +62,7 @@ test('wrong argument types: TypeError naming the argument', () => {
   typeError(() => am.mesh(square, { mode: 4 }), /mode must be a string, not number/);
   typeError(() => am.mesh(square, { maxArea: '1' }), /options\.maxArea must be a number, not string/);
   typeError(() => am.mesh(square, { convexHull: 1 }), /options\.convexHull must be a boolean/);
+  typeError(() => am.mesh(square, { exactSegments: 'yes' }), /options\.exactSegments must be a boolean/);
   typeError(() => am.mesh(square, { onProgress: 1 }), /options\.onProgress must be a function/);
   typeError(() => am.mesh(square, { signal: {} }), /options\.signal must be an AbortSignal/);
   typeError(() => am.parsePoly(42), /text must be a string, not number/);

@@ -159,8 +159,9 @@ function toOptions(options, pslgFill) {
   checkObject(options, 'options');
   const mode = enumOption(options.mode, MODES, 'mode', 'cdt');
   const fill = enumOption(options.fill, FILLS, 'fill rule', pslgFill === undefined ? 'triangle' : pslgFill);
-  if (options.convexHull !== undefined && typeof options.convexHull !== 'boolean')
-    throw new TypeError(`options.convexHull must be a boolean, not ${describe(options.convexHull)}`);
+  for (const key of ['convexHull', 'exactSegments'])
+    if (options[key] !== undefined && typeof options[key] !== 'boolean')
+      throw new TypeError(`options.${key} must be a boolean, not ${describe(options[key])}`);
   const maxSteiner = numberOption(options, 'maxSteiner', 0);
   if (!Number.isInteger(maxSteiner) || maxSteiner < 0 || maxSteiner > 0xffffffff)
     throw badInput(`maxSteiner must be an integer from 0 (automatic) to 4294967295, not ${maxSteiner}`);
@@ -171,6 +172,7 @@ function toOptions(options, pslgFill) {
     mode,
     fill,
     convexHull: options.convexHull === true,
+    exactSegments: options.exactSegments === true,
     // The core checks the ranges of these three and names the option when one is wrong.
     maxAngle: numberOption(options, 'maxAngle', 90),
     minAngle: numberOption(options, 'minAngle', 0),

@@ -78,6 +78,12 @@ export interface MeshOptions {
   fill?: FillRule;
   /** Keep every triangle of the convex hull (hole points still apply). */
   convexHull?: boolean;
+  /**
+   * Steiner points on segments exactly on their lines where a representable point is near
+   * (integer coordinates), not within rounding of them: for exact checkers such as the
+   * CG:SHOP 2025 verifier; costs points. Default false.
+   */
+  exactSegments?: boolean;
   /** Degrees; acute mode: every angle < maxAngle (60 < maxAngle <= 90; default 90, exact). */
   maxAngle?: number;
   /** Degrees; smallest angle wanted (quality mode: default 20; 0 <= minAngle < 60, terminates up to about 40). */
@@ -103,6 +109,7 @@ export interface ResolvedOptions {
   mode: Mode;
   fill: FillRule;
   convexHull: boolean;
+  exactSegments: boolean;
   maxAngle: number;
   minAngle: number;
   maxArea: number;
