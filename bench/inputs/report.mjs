@@ -293,7 +293,9 @@ if (cgshopDir && existsSync(cgshopDir)) {
   cgSections.push('## CG:SHOP 2025 (150 instances, score = Steiner points)', '');
   cgSections.push('Non-obtuse (`build/acutemesh --mode nonobtuse --time-limit ' + CGSHOP_LIMIT +
     ' --stats --no-output INSTANCE`): solved = exit 0 and no obtuse triangle (exact count). ' +
-    'Steiner totals are over the instances we solved, next to the best known and aCute counts on the same instances.', '');
+    'Steiner totals are over the instances we solved, next to the best known and aCute counts on the same instances. ' +
+    'The CLI meshes CG:SHOP input with `--exact-segments` (every Steiner point on a segment exactly on it, as the exact ' +
+    'official verifier needs; the best-known solutions are exact rationals too).', '');
   cgSections.push(...nob, '');
   cgSections.push('Acute (`--mode acute`): solved = exit 0 and no right or obtuse triangle. The best-known counts are for ' +
     'non-obtuse triangulations (no acute reference exists); they show how far an acute mesh is from the non-obtuse optimum.', '');

@@ -343,6 +343,7 @@ class Refiner {
   bool insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points,
                              bool fewestBad);
   int badChange(const double* x) const;
+  size_t weighCandidates(uint32_t t, const std::vector<std::array<double, 3>>& points, int& fewest);
   // Triangle t's shortest edge pq and its circumcircle: where the Steiner point searches start.
   struct ShortestEdge {
     const double *p, *q;
@@ -1190,30 +1191,45 @@ bool Refiner::repair(uint32_t t, Corner c) {
 
 // Inserts one of the first kSliceTries candidate points for t (best first) whose cavity's rim
 // holds no subsegment it encroaches (Strategy::sliceSparesSegments): the first such, or with
-// fewestBad the one whose new triangles leave the fewest that miss the target (badChange; ties
-// to the earlier). Else the best, letting insertSteiner split what it encroaches.
+// fewestBad the one whose new triangles leave the fewest that miss the target
+// (weighCandidates). Else the best, letting insertSteiner split what it encroaches.
 // (fewestBad: CG:SHOP non-obtuse 36,704 -> 35,770 Steiner points, acute 62,684 -> 62,336, A.poly
 // acute 81 -> 76. Quality refinement keeps the first: the count there made A.poly at 40
 // degrees 138 points instead of 99.)
 bool Refiner::insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points,
                                     bool fewestBad) {
+  if (fewestBad && strategy_.sliceSparesSegments) {
+    int fewest = 0;
+    size_t chosen = weighCandidates(t, points, fewest);
+    if (chosen < points.size() && insertSteiner(t, points[chosen].data())) return true;
+  } else {
+    for (size_t i = 0; strategy_.sliceSparesSegments && i < points.size() && i < kSliceTries; ++i) {
+      const double* x = points[i].data();
+      if (!std::isfinite(x[0]) || !std::isfinite(x[1])) continue;
+      CavityRim rim = examineCavity(t, x);
+      if (rim.encroached == kNone && insertSteiner(t, x, rim)) return true;
+    }
+  }
+  return insertSteiner(t, points[0].data());
+}
+
+// Of the first kSliceTries candidate points for t, the one whose insertion leaves the fewest
+// bad triangles (badChange; ties to the earlier), of those that encroach no subsegment and
+// lie on t's side of every fixed edge (else there is no fair count); points.size() if none.
+// `fewest`: its change.
+size_t Refiner::weighCandidates(uint32_t t, const std::vector<std::array<double, 3>>& points,
+                                int& fewest) {
   size_t chosen = points.size();
-  int fewest = 0;
-  for (size_t i = 0; strategy_.sliceSparesSegments && i < points.size() && i < kSliceTries; ++i) {
+  fewest = 0;
+  for (size_t i = 0; i < points.size() && i < kSliceTries; ++i) {
     const double* x = points[i].data();
     if (!std::isfinite(x[0]) || !std::isfinite(x[1])) continue;
     CavityRim rim = examineCavity(t, x);
-    if (rim.encroached != kNone) continue;
-    if (!fewestBad) {
-      if (insertSteiner(t, x, rim)) return true;
-      continue;
-    }
-    if (rim.beyond != kNone || cavity_.size() > kCavityExamined) continue;  // (no fair count)
+    if (rim.encroached != kNone || rim.beyond != kNone || cavity_.size() > kCavityExamined) continue;
     int change = badChange(x);
     if (chosen == points.size() || change < fewest) chosen = i, fewest = change;
   }
-  if (chosen < points.size() && insertSteiner(t, points[chosen].data())) return true;
-  return insertSteiner(t, points[0].data());
+  return chosen;
 }
 
 // How many more triangles miss the target once x goes into cavity_ (examineCavity's, for a
@@ -1394,15 +1410,9 @@ void Refiner::polish() {
 int Refiner::repairGain(uint32_t t, Corner c) {
   if (!c.large || T_.isFixed(3 * t + uint32_t((c.k + 1) % 3))) return 1;
   slicePoints(t, candidates_);
-  int fewest = 1;
-  for (size_t i = 0; i < candidates_.size() && i < kSliceTries; ++i) {
-    const double* x = candidates_[i].data();
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1])) continue;
-    CavityRim rim = examineCavity(t, x);
-    if (rim.encroached != kNone || rim.beyond != kNone || cavity_.size() > kCavityExamined) continue;
-    fewest = std::min(fewest, badChange(x));
-  }
-  return -fewest;
+  int fewest = 0;
+  if (weighCandidates(t, candidates_, fewest) == candidates_.size()) return -1;
+  return -std::min(fewest, 1);
 }
 
 StepResult Refiner::repairAll() {
@@ -1614,16 +1624,8 @@ bool Refiner::tryMerge(uint32_t u, uint32_t w) {
       }
       if (bad != kNone) {
         slicePoints(bad, candidates_);
-        size_t best = candidates_.size();
         int fewest = 0;
-        for (size_t i = 0; i < candidates_.size() && i < kSliceTries; ++i) {
-          const double* x = candidates_[i].data();
-          if (!std::isfinite(x[0]) || !std::isfinite(x[1])) continue;
-          CavityRim rim = examineCavity(bad, x);
-          if (rim.encroached != kNone || rim.beyond != kNone || cavity_.size() > kCavityExamined) continue;
-          int change = badChange(x);
-          if (best == candidates_.size() || change < fewest) best = i, fewest = change;
-        }
+        size_t best = weighCandidates(bad, candidates_, fewest);
         if (best < candidates_.size()) {
           const double x[2] = {candidates_[best][0], candidates_[best][1]};
           merged = tryMergedPoint(x);
