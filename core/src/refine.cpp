@@ -151,8 +151,11 @@ struct Strategy {
   // Steiner points: exact slides everywhere 70,355; in the removal pass only 66,159 but A.poly
   // 90 instead of 85, over aCute's 86; as two more strategies 67,564, not worth the runs.)
   bool exactSlide = false;
-  // Of the slice's points, one that encroaches no subsegment before the farthest (see
-  // repair()).
+  // Candidate points are weighed (see repair()): of the Voronoi vertices in the bad
+  // triangle's circumdisk that encroach no subsegment, the one that leaves the fewest bad
+  // triangles goes in, and a subsegment split by the boundary rule goes where it leaves the
+  // fewest. Without (acute's fallbacks): the seed's farthest point of the slice and the usual
+  // split places.
   bool sliceSparesSegments = true;
   // Repair first the bad triangle whose repair leaves the fewest bad triangles (evaluated on
   // its slice's points, see insertSparingSegments), not the largest (acute and non-obtuse).
@@ -265,7 +268,7 @@ class Refiner {
   CavityRim examineCavity(uint32_t from, const double* x);
   uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
   bool relocate(uint32_t a);
-  bool relocateOntoPerpendicular(const double* old);
+  bool relocateOntoPerpendicular(uint32_t a, const double* old);
   void legalizeStar(uint32_t a);
   bool slide(uint32_t a);
   bool nearFixedLinkEdge(uint32_t a, const double* x) const;
@@ -298,8 +301,7 @@ class Refiner {
   };
   SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
   bool slideInterval(double tp, double tq, const SegmentLine& line, double& t);
-  std::vector<uint8_t> ringInside_;
-  uint32_t movingVertex_ = 0;  // relocate()'s vertex  // per triangle of ring_ (slide, relocate): in the domain
+  std::vector<uint8_t> ringInside_;  // per triangle of ring_ (slide, relocate): in the domain
   bool tryRemove(uint32_t v);
   bool tryRemoveFromSegment(uint32_t v);
   bool tryMerge(uint32_t u, uint32_t w);
@@ -1085,7 +1087,6 @@ bool Refiner::relocate(uint32_t a) {
   linkEdges_.clear();
   for (size_t i = 0; i < ring.size(); ++i) linkEdges_.push_back({ring[i], ring[(i + 1) % ring.size()]});
   double old[2] = {P(a)[0], P(a)[1]};
-  movingVertex_ = a;
   // Below 90 degrees the bound's wedges first, then the plain slabs: the angle at a is no
   // half-plane, and the wider region's samples find places the narrower one's miss.
   for (bool wedges : {strictMax_, false}) {
@@ -1102,17 +1103,17 @@ bool Refiner::relocate(uint32_t a) {
     if (!wedges) break;
   }
   // (CG:SHOP non-obtuse, exact segments: 36,266 -> 34,331 Steiner points.)
-  if (nonObtuse_ && relocateOntoPerpendicular(old)) return true;
+  if (nonObtuse_ && relocateOntoPerpendicular(a, old)) return true;
   moveTo(a, old[0], old[1]);
   return false;
 }
 
-// Non-obtuse: where a's link (ring_) runs straight through a vertex m (m and its neighbours in
+// Non-obtuse: where the link of a (ring_) runs straight through a vertex m (m and its neighbours in
 // the link exactly in line, as on a segment) the two angles at m sum to 180 degrees, so a must
 // stand exactly on the perpendicular at m: relocation's open slabs leave no room for that.
 // Tries points of that perpendicular near a's projection on it, whose offsets have few bits
 // (so that the point, and the right angles, can come out exact); moveTo checks them exactly.
-bool Refiner::relocateOntoPerpendicular(const double* old) {
+bool Refiner::relocateOntoPerpendicular(uint32_t a, const double* old) {
   const size_t n = ring_.size();
   for (size_t i = 0; i < n; ++i) {
     const double *m = P(ring_[i]), *before = P(ring_[(i + n - 1) % n]), *after = P(ring_[(i + 1) % n]);
@@ -1124,7 +1125,7 @@ bool Refiner::relocateOntoPerpendicular(const double* old) {
       int e = 0;
       std::frexp(s, &e);
       double t = std::ldexp(std::nearbyint(std::ldexp(s, bits - e)), e - bits);
-      if (moveTo(movingVertex_, m[0] + t * nx, m[1] + t * ny)) return true;
+      if (moveTo(a, m[0] + t * nx, m[1] + t * ny)) return true;
     }
   }
   return false;
@@ -1587,10 +1588,13 @@ void Refiner::mergePoint(uint32_t u, uint32_t w, double* out) {
 // target (holeMeetsTarget). 1: merged; 0: x is out again, the hole as it was; -1: x could not
 // be taken out again and stays (the final repair pass checks).
 int Refiner::tryMergedPoint(const double* x) {
-  uint32_t m = addVertex(x, kFree);
   Location loc = T_.locate(x, touched_.back());
+  if (loc.where != Where::InTriangle || !T_.inside[loc.tri]) return 0;
+  for (uint32_t k = 0; k < 3; ++k)  // no edge shorter than refinement's smallest
+    if (dist2(x, P(T_.tri[3 * loc.tri + k])) < minEdge2_) return 0;
+  uint32_t m = addVertex(x, kFree);
   bool removedAgain = false;
-  if (loc.where == Where::InTriangle && T_.inside[loc.tri] && T_.insertAt(m, loc) == m) {
+  if (T_.insertAt(m, loc) == m) {
     hole_ = touched_;
     T_.touched = nullptr;
     if (holeMeetsTarget()) return 1;
