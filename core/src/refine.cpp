@@ -344,7 +344,7 @@ class Refiner {
   void qualityPoints(uint32_t t, std::vector<std::array<double, 3>>& out) const;
   bool insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points,
                              bool fewestBad);
-  int badChange(const double* x) const;
+  int badChange(const double* x, uint32_t split = kNone) const;
   size_t weighCandidates(uint32_t t, const std::vector<std::array<double, 3>>& points, int& fewest);
   // Triangle t's shortest edge pq and its circumcircle: where the Steiner point searches start.
   struct ShortestEdge {
@@ -1234,13 +1234,15 @@ size_t Refiner::weighCandidates(uint32_t t, const std::vector<std::array<double,
 }
 
 // How many more triangles miss the target once x goes into cavity_ (examineCavity's, for a
-// point that encroaches no subsegment): the cavity's triangles give way to those joining x to
-// its rim.
-int Refiner::badChange(const double* x) const {
+// point that encroaches no subsegment; splitBadChange's for a split of the subsegment of
+// fixed half-edge `split`, whose two sides then give way to x): the cavity's triangles give
+// way to those joining x to its rim.
+int Refiner::badChange(const double* x, uint32_t split) const {
   int change = 0;
   for (uint32_t t : cavity_) {
     change -= worstCorner(t).k >= 0;
     for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+      if (split != kNone && (e == split || e == T_.opp[split])) continue;
       uint32_t n = T_.opp[e] / 3;
       bool rim = T_.isFixed(e) || T_.isGhost(n) ||
                  std::find(cavity_.begin(), cavity_.end(), n) == cavity_.end();
@@ -1269,7 +1271,7 @@ bool Refiner::splitAtFoot(uint32_t t, int k) {
 }
 
 // How many more triangles miss the target once m splits the subsegment of fixed half-edge e:
-// the cavities on both sides give way to triangles joining m to their rims.
+// the cavities on both sides (into cavity_) give way to triangles joining m to their rims.
 int Refiner::splitBadChange(uint32_t e, const double* m) {
   cavity_.clear();
   for (uint32_t side : {e, T_.opp[e]}) {
@@ -1285,20 +1287,7 @@ int Refiner::splitBadChange(uint32_t e, const double* m) {
       const uint32_t* w = &T_.tri[3 * n];
       if (incircle(P(w[0]), P(w[1]), P(w[2]), m) > 0) cavity_.push_back(n);
     }
-  int change = 0;
-  for (uint32_t t : cavity_) {
-    change -= worstCorner(t).k >= 0;
-    for (uint32_t f = 3 * t; f < 3 * t + 3; ++f) {
-      if (f == e || f == T_.opp[e]) continue;
-      uint32_t n = T_.opp[f] / 3;
-      bool rim = T_.isFixed(f) || T_.isGhost(n) ||
-                 std::find(cavity_.begin(), cavity_.end(), n) == cavity_.end();
-      if (!rim) continue;
-      const double* p[3] = {m, P(T_.tri[f]), P(T_.tri[next(f)])};
-      change += worstCorner(p).k >= 0;
-    }
-  }
-  return change;
+  return badChange(m, e);
 }
 
 // The boundary rule with the split point weighed (where slice points are weighed too,
