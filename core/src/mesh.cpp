@@ -188,7 +188,8 @@ void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats
 // The output triangles that miss the refinement target (the first kMaxMissedListed), for
 // Stats::missedTriangles: exact at 90 degrees, floating point for other bounds.
 void listMissedTriangles(const Options& options, const Mesh& mesh, Stats& stats) {
-  const double cosMax = detail::portableCos(options.maxAngle * M_PI / 180), cosMin = detail::portableCos(options.minAngle * M_PI / 180);
+  const double cosMax = detail::portableCos(options.maxAngle * M_PI / 180);
+  const double cosMin = detail::portableCos(options.minAngle * M_PI / 180);
   stats.missedTriangles.clear();
   for (size_t t = 0; t < mesh.triangleCount() && stats.missedTriangles.size() < kMaxMissedListed; ++t) {
     const double* p[3];
