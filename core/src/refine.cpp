@@ -266,6 +266,7 @@ class Refiner {
   // The same with x's cavity just examined (rim: examineCavity's answer, cavity_ its cavity).
   bool insertSteiner(uint32_t from, const double* x, CavityRim rim);
   CavityRim examineCavity(uint32_t from, const double* x);
+  CavityRim growCavity(const double* x);
   uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
   bool relocate(uint32_t a);
   bool relocateOntoPerpendicular(uint32_t a, const double* old);
@@ -748,9 +749,14 @@ void Refiner::qualityPoints(uint32_t t, std::vector<std::array<double, 3>>& out)
 }
 
 Refiner::CavityRim Refiner::examineCavity(uint32_t from, const double* x) {
-  // The cavity: triangles reachable from `from` without crossing a fixed edge whose
-  // circumcircle holds x. Fixed edges on its rim are the subsegments x could encroach.
   cavity_.assign(1, from);
+  return growCavity(x);
+}
+
+// The cavity: the triangles reachable from those in cavity_ without crossing a fixed edge
+// whose circumcircle holds x (into cavity_). Fixed edges on its rim are the subsegments x
+// could encroach.
+Refiner::CavityRim Refiner::growCavity(const double* x) {
   uint32_t encroached = kNone, beyond = kNone;
   double encroachedLen = -1;
   for (size_t i = 0; i < cavity_.size(); ++i) {
@@ -1278,15 +1284,7 @@ int Refiner::splitBadChange(uint32_t e, const double* m) {
     uint32_t t = side / 3;
     if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t)) cavity_.push_back(t);
   }
-  for (size_t i = 0; i < cavity_.size() && cavity_.size() <= kCavityExamined; ++i)
-    for (uint32_t f = 3 * cavity_[i]; f < 3 * cavity_[i] + 3; ++f) {
-      uint32_t n = T_.opp[f] / 3;
-      if (T_.isFixed(f) || T_.isGhost(n) || !T_.inside[n] ||
-          std::find(cavity_.begin(), cavity_.end(), n) != cavity_.end())
-        continue;
-      const uint32_t* w = &T_.tri[3 * n];
-      if (incircle(P(w[0]), P(w[1]), P(w[2]), m) > 0) cavity_.push_back(n);
-    }
+  growCavity(m);
   return badChange(m, e);
 }
 
