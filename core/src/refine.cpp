@@ -151,12 +151,13 @@ struct Strategy {
   // Steiner points: exact slides everywhere 70,355; in the removal pass only 66,159 but A.poly
   // 90 instead of 85, over aCute's 86; as two more strategies 67,564, not worth the runs.)
   bool exactSlide = false;
-  // Candidate points are weighed (see repair()): of the Voronoi vertices in the bad
-  // triangle's circumdisk that encroach no subsegment, the one that leaves the fewest bad
-  // triangles goes in, and a subsegment split by the boundary rule goes where it leaves the
-  // fewest. Without (acute's fallbacks): the seed's farthest point of the slice and the usual
+  // Candidate points spare the segments and are weighed (see repair()): of the Voronoi
+  // vertices in the bad triangle's circumdisk that encroach no subsegment, the one that leaves
+  // the fewest bad triangles goes in (quality: the first that encroaches none), and a
+  // subsegment split by the boundary rule goes where it leaves the fewest. Without (acute's
+  // fallbacks): the seed's farthest point of the slice, whatever it encroaches, and the usual
   // split places.
-  bool sliceSparesSegments = true;
+  bool weighPoints = true;
   // Repair first the bad triangle whose repair leaves the fewest bad triangles (evaluated on
   // its slice's points, see insertSparingSegments), not the largest (acute and non-obtuse).
   bool fewestBadFirst = false;
@@ -695,10 +696,10 @@ void Refiner::slicePoints(uint32_t t, std::vector<std::array<double, 3>>& out) c
   const double *p = edge.p, *q = edge.q, *center = edge.center;
   const double radius2 = edge.radius2;
   double ux = q[0] - p[0], uy = q[1] - p[1], len2 = ux * ux + uy * uy;
-  // Where the candidates are weighed (sliceSparesSegments: insertSparingSegments counts the
+  // Where the candidates are weighed (Strategy::weighPoints: insertSparingSegments counts the
   // bad triangles each leaves), those of t's whole circumdisk compete, not only the slice's
   // (CG:SHOP non-obtuse 34,596 -> 33,313 Steiner points, acute 61,129 -> 58,600).
-  const bool wholeDisk = strategy_.sliceSparesSegments;
+  const bool wholeDisk = strategy_.weighPoints;
   auto inSlice = [&](const double* c) {
     double along = (c[0] - p[0]) * ux + (c[1] - p[1]) * uy;
     return (wholeDisk || (along > 0 && along < len2)) && dist2(c, center) < radius2;
@@ -1076,9 +1077,9 @@ bool Refiner::clipCentroid(double* out) const {
 // target, keeping the star's topology: the point must lie in the kernel of a's link and in
 // the slab of each link edge (angles at the link vertices below the bound; with a minimum
 // angle, also at least that), outside each link edge's diametral disk (angle at a below 90).
-// The slabs and the kernel are half-planes: their
-// intersection is a convex polygon (clipToLinkSlabs); its centroid and points between it and
-// the corners are tried, and the first whose star passes the exact test is kept.
+// The slabs and the kernel are half-planes: their intersection is a convex polygon
+// (clipToLinkSlabs); its centroid and points between it and the corners are tried, and the
+// first whose star passes the exact test is kept.
 bool Refiner::relocate(uint32_t a) {
   if (role_[a] != kFree) return false;
   uint32_t e0 = T_.vertexEdge[a], e = e0;
@@ -1114,11 +1115,12 @@ bool Refiner::relocate(uint32_t a) {
   return false;
 }
 
-// Non-obtuse: where the link of a (ring_) runs straight through a vertex m (m and its neighbours in
-// the link exactly in line, as on a segment) the two angles at m sum to 180 degrees, so a must
-// stand exactly on the perpendicular at m: relocation's open slabs leave no room for that.
-// Tries points of that perpendicular near a's projection on it, whose offsets have few bits
-// (so that the point, and the right angles, can come out exact); moveTo checks them exactly.
+// Non-obtuse: where the link of a (ring_) runs straight through a vertex m (m and its
+// neighbours in the link exactly in line, as on a segment) the two angles at m sum to 180
+// degrees, so a must stand exactly on the perpendicular at m: relocation's open slabs leave
+// no room for that. Tries points of that perpendicular near a's projection on it, whose
+// offsets have few bits (so that the point, and the right angles, can come out exact);
+// moveTo checks them exactly.
 bool Refiner::relocateOntoPerpendicular(uint32_t a, const double* old) {
   const size_t n = ring_.size();
   for (size_t i = 0; i < n; ++i) {
@@ -1175,7 +1177,7 @@ bool Refiner::repair(uint32_t t, Corner c) {
   if (c.large) {
     // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
     uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
-    if (strategy_.sliceSparesSegments && T_.isFixed(opposite) && !isChord(opposite))
+    if (strategy_.weighPoints && T_.isFixed(opposite) && !isChord(opposite))
       return splitWeighed(opposite, P(T_.tri[3 * t + c.k]));
     if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) return splitAtFoot(t, c.k);
     if (T_.isFixed(opposite)) return splitSubsegment(opposite);
@@ -1197,7 +1199,7 @@ bool Refiner::repair(uint32_t t, Corner c) {
 }
 
 // Inserts one of the first kSliceTries candidate points for t (best first) whose cavity's rim
-// holds no subsegment it encroaches (Strategy::sliceSparesSegments): the first such, or with
+// holds no subsegment it encroaches (Strategy::weighPoints): the first such, or with
 // fewestBad the one whose new triangles leave the fewest that miss the target
 // (weighCandidates). Else the best, letting insertSteiner split what it encroaches.
 // (fewestBad: CG:SHOP non-obtuse 36,704 -> 35,770 Steiner points, acute 62,684 -> 62,336, A.poly
@@ -1205,12 +1207,12 @@ bool Refiner::repair(uint32_t t, Corner c) {
 // degrees 138 points instead of 99.)
 bool Refiner::insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points,
                                     bool fewestBad) {
-  if (fewestBad && strategy_.sliceSparesSegments) {
+  if (fewestBad && strategy_.weighPoints) {
     int fewest = 0;
     size_t chosen = weighCandidates(t, points, fewest);
     if (chosen < points.size() && insertSteiner(t, points[chosen].data())) return true;
   } else {
-    for (size_t i = 0; strategy_.sliceSparesSegments && i < points.size() && i < kSliceTries; ++i) {
+    for (size_t i = 0; strategy_.weighPoints && i < points.size() && i < kSliceTries; ++i) {
       const double* x = points[i].data();
       if (!std::isfinite(x[0]) || !std::isfinite(x[1])) continue;
       CavityRim rim = examineCavity(t, x);
@@ -1289,7 +1291,7 @@ int Refiner::splitBadChange(uint32_t e, const double* m) {
 }
 
 // The boundary rule with the split point weighed (where slice points are weighed too,
-// Strategy::sliceSparesSegments): of the usual place (shell or midpoint; with
+// Strategy::weighPoints): of the usual place (shell or midpoint; with
 // Strategy::footOnSegments the foot of the altitude), the foot of the altitude from apex and
 // the tenths of the subsegment, the one that leaves the fewest bad triangles (splitBadChange;
 // ties to the earlier). CG:SHOP non-obtuse 32,945 -> 30,664 Steiner points, acute 58,109 ->
@@ -1779,7 +1781,7 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
     // instance sparing the segments grades into a narrow wedge and ends a sliver short.
     for (size_t i = 0; i < 2; ++i) {
       strategies.push_back(strategies[i]);
-      strategies.back().sliceSparesSegments = false;
+      strategies.back().weighPoints = false;
     }
   }
   if (options.mode == Mode::NonObtuse || options.mode == Mode::Acute) {
