@@ -146,8 +146,8 @@ struct Strategy {
   bool cutAtFeetFirst = false;  // non-obtuse: cut slivers at altitude feet before the fans
   bool footOnSegments = false;  // non-obtuse: split an encroached subsegment at the altitude foot
   bool lazyFans = false;  // fans only at small sectors where a bad triangle turns up
-  // Non-obtuse: slide a segment vertex to the middle of the stretch slideInterval() finds
-  // rather than to the first of a few sampled places that works. (Acute, CG:SHOP 67,744
+  // Non-obtuse: slide a segment vertex to the middle of the longest stretch slideStretches()
+  // finds before trying a few sampled places. (Acute, CG:SHOP 67,744
   // Steiner points: exact slides everywhere 70,355; in the removal pass only 66,159 but A.poly
   // 90 instead of 85, over aCute's 86; as two more strategies 67,564, not worth the runs.)
   bool exactSlide = false;
@@ -302,7 +302,8 @@ class Refiner {
     }
   };
   SegmentLine segmentLine(uint32_t seg, const double* p, const double* q) const;
-  bool slideInterval(double tp, double tq, const SegmentLine& line, double& t);
+  bool slideStretches(double tp, double tq, const SegmentLine& line, double margin);
+  std::vector<std::array<double, 2>> slideStretches_;
   std::vector<uint8_t> ringInside_;  // per triangle of ring_ (slide, relocate): in the domain
   bool tryRemove(uint32_t v);
   bool tryRemoveFromSegment(uint32_t v);
@@ -937,21 +938,34 @@ bool Refiner::slide(uint32_t a) {
   const double *p = P(T_.tri[next(spokes[0])]), *q = P(T_.tri[next(spokes[1])]);
   SegmentLine line = segmentLine(T_.segment[spokes[0]], p, q);
   double tp = line.param(p), tq = line.param(q);
-  double old[2] = {P(a)[0], P(a)[1]};
-  // With strategy_.exactSlide the feasible stretch of the line is found directly
-  // (slideInterval): it finds narrow ones the samples below miss. (moveTo before
-  // nearFixedLinkEdge: it rejects most positions, and more cheaply.)
-  if (strategy_.exactSlide) {
-    double t = 0;
-    if (!slideInterval(tp, tq, line, t)) return false;
+  const double old[2] = {P(a)[0], P(a)[1]};
+  auto tryAt = [&](double t) {
     double x[2];
     line.at(t, x);
-    if (moveTo(a, x[0], x[1]) && !nearFixedLinkEdge(a, x)) return true;
+    return moveTo(a, x[0], x[1]) && !nearFixedLinkEdge(a, x);
+  };
+  // With strategy_.exactSlide the middle of the longest stretch: it finds narrow ones the
+  // samples below miss. (moveTo before nearFixedLinkEdge: it rejects most positions, and more
+  // cheaply.)
+  if (strategy_.exactSlide && slideStretches(tp, tq, line, 0)) {
+    const std::array<double, 2>* longest = &slideStretches_[0];
+    for (const auto& st : slideStretches_)
+      if (st[1] - st[0] > (*longest)[1] - (*longest)[0]) longest = &st;
+    if (tryAt(0.5 * ((*longest)[0] + (*longest)[1]))) return true;
   }
+  // Only samples within the stretches (widened by a margin for rounding, also the rounding of
+  // the point itself) can pass moveTo's exact test; the others are not tried (with exact
+  // segments each costs exact predicates to put it on the line).
+  const double reach = std::fabs(line.start[0]) + std::fabs(line.start[1]) +
+                       std::fabs(line.ux) + std::fabs(line.uy);
+  const double margin = 1e-9 * std::fabs(tq - tp) +
+                        8 * std::numeric_limits<double>::epsilon() * reach / std::sqrt(line.u2);
+  if (!slideStretches(tp, tq, line, margin)) return false;
   for (int k : {8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14}) {
-    double x[2];
-    line.at(tp + (tq - tp) * k / 16.0, x);
-    if (moveTo(a, x[0], x[1]) && !nearFixedLinkEdge(a, x)) return true;
+    double t = tp + (tq - tp) * k / 16.0;
+    bool within = false;
+    for (const auto& st : slideStretches_) within |= st[0] < t && t < st[1];
+    if (within && tryAt(t)) return true;
   }
   moveTo(a, old[0], old[1]);
   return false;
@@ -962,16 +976,30 @@ bool Refiner::slide(uint32_t a) {
 // right or sharper angles: each
 // triangle (X(t), x, y) asks t to be on one side of three values (orientation, the angles at x
 // and y: linear in t) and outside the interval where the line crosses the diametral disk of
-// x-y (the angle at X). True with t the middle of the longest stretch left, if any. (In
-// floating point: moveTo() checks the point exactly.)
-bool Refiner::slideInterval(double tp, double tq, const SegmentLine& line, double& t) {
+// x-y (the angle at X). Leaves the stretches of t that are left in slideStretches_ (open
+// intervals, in increasing order), each bound relaxed by margin; false if there are none.
+// (In floating point: moveTo() checks a point exactly.)
+bool Refiner::slideStretches(double tp, double tq, const SegmentLine& line, double margin) {
   double lo = std::min(tp, tq), hi = std::max(tp, tq);
   const double s[2] = {line.start[0], line.start[1]}, d[2] = {line.ux, line.uy};
+  // With a margin the bounds are relaxed by their rounding error too (err: a bound on the
+  // error of a sum of two products of magnitude m), so that no point that passes the exact
+  // test is left out; a constraint whose slope may be 0 by rounding then counts as none.
+  const double eps = std::numeric_limits<double>::epsilon();
+  auto err = [&](double m) { return margin > 0 ? 8 * eps * m : 0; };
+  auto keep = [&](double f0, double f1, double m0, double m1) {  // f0 + t f1 > 0
+    const double e0 = err(m0), e1 = err(m1);
+    if (std::fabs(f1) > e1) {
+      const double bound = -f0 / f1, slack = margin + (e0 + std::fabs(bound) * e1) / (std::fabs(f1) - e1);
+      if (f1 > 0) lo = std::max(lo, bound - slack);
+      else hi = std::min(hi, bound + slack);
+    } else if (margin > 0 ? f0 < -e0 : !(f0 > 0)) {  // (margin: 0 may be a right angle all along)
+      hi = -INFINITY;
+    }
+  };
   auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1]; };
-  auto keep = [&](double f0, double f1) {  // f0 + t f1 > 0
-    if (f1 > 0) lo = std::max(lo, -f0 / f1);
-    else if (f1 < 0) hi = std::min(hi, -f0 / f1);
-    else if (!(f0 > 0)) hi = -INFINITY;
+  auto mag = [](const double* u, const double* v) {
+    return std::fabs(u[0] * v[0]) + std::fabs(u[1] * v[1]);
   };
   std::vector<std::array<double, 2>>& cut = clipNext_;
   cut.clear();
@@ -979,31 +1007,33 @@ bool Refiner::slideInterval(double tp, double tq, const SegmentLine& line, doubl
     const double *x = P(ring_[i]), *y = P(ring_[(i + 1) % ring_.size()]);
     double yx[2] = {y[0] - x[0], y[1] - x[1]}, sx[2] = {s[0] - x[0], s[1] - x[1]};
     double sy[2] = {s[0] - y[0], s[1] - y[1]}, xy[2] = {-yx[0], -yx[1]};
-    keep(yx[0] * sx[1] - yx[1] * sx[0], yx[0] * d[1] - yx[1] * d[0]);  // X left of x->y
+    const double yxPerp[2] = {yx[1], -yx[0]};  // X left of x->y: (X - x) . yxPerp < 0
+    keep(yx[0] * sx[1] - yx[1] * sx[0], yx[0] * d[1] - yx[1] * d[0], mag(sx, yxPerp), mag(d, yxPerp));
     if (!ringInside_[i]) continue;  // outside the domain only the orientation counts
-    keep(dot(sx, yx), dot(d, yx));                                     // angle at x
-    keep(dot(sy, xy), dot(d, xy));                                     // angle at y
+    keep(dot(sx, yx), dot(d, yx), mag(sx, yx), mag(d, yx));  // angle at x
+    keep(dot(sy, xy), dot(d, xy), mag(sy, xy), mag(d, xy));  // angle at y
     double c[2] = {s[0] - 0.5 * (x[0] + y[0]), s[1] - 0.5 * (x[1] + y[1])};
-    double dd = dot(d, d), dc = dot(d, c), r2 = 0.25 * dot(yx, yx);
-    double disc = dc * dc - dd * (dot(c, c) - r2);
+    double dd = dot(d, d), dc = dot(d, c), cc = dot(c, c), r2 = 0.25 * dot(yx, yx);
+    double disc = dc * dc - dd * (cc - r2);
     if (disc > 0) {
       double root = std::sqrt(disc);
-      cut.push_back({(-dc - root) / dd, (-dc + root) / dd});
+      // (Near a tangent the roots move by the square root of disc's error.)
+      double slack = margin > 0 ? margin + std::sqrt(err(dc * dc + dd * (cc + r2))) / dd : 0;
+      cut.push_back({(-dc - root) / dd + slack, (-dc + root) / dd - slack});
     }
   }
+  std::vector<std::array<double, 2>>& stretches = slideStretches_;
+  stretches.clear();
   if (!(lo < hi)) return false;
   std::sort(cut.begin(), cut.end());
-  double from = lo, best = -1;
-  auto gap = [&](double a, double b) {
-    if (b - a > best) best = b - a, t = 0.5 * (a + b);
-  };
+  double from = lo;
   for (const auto& iv : cut) {
-    if (iv[0] > from) gap(from, std::min(iv[0], hi));
+    if (iv[0] > from) stretches.push_back({from, std::min(iv[0], hi)});
     from = std::max(from, iv[1]);
     if (from >= hi) break;
   }
-  if (from < hi) gap(from, hi);
-  return best > 0;
+  if (from < hi) stretches.push_back({from, hi});
+  return !stretches.empty();
 }
 
 // Leaves in clipPoly_ the convex region of points p for which every triangle (p, x, y) over a
