@@ -1048,34 +1048,41 @@ void Refiner::clipToLinkSlabs(bool wedges) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (const auto& edge : linkEdges_)
     for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], P(edge[0])[k]), hi[k] = std::max(hi[k], P(edge[0])[k]);
-  std::vector<std::array<double, 2>>& poly = clipPoly_;
-  std::vector<std::array<double, 2>>& next = clipNext_;
-  poly.assign({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
-  std::vector<double>& f = clipSide_;
+  // Every clip adds at most one corner: the buffers are sized once, and the loops run on raw
+  // pointers (the hottest loop of the improvement pass).
+  const size_t clips = linkEdges_.size() * (1 + 2 * (acute_ || nonObtuse_) + 2 * (options_.minAngle > 0));
+  clipPoly_.resize(4 + clips + 1);
+  clipNext_.resize(4 + clips + 1);
+  clipSide_.resize(4 + clips + 2);
+  std::array<double, 2>* poly = clipPoly_.data();
+  std::array<double, 2>* next = clipNext_.data();
+  double* f = clipSide_.data();
+  size_t n = 4;
+  poly[0] = {lo[0], lo[1]}, poly[1] = {hi[0], lo[1]}, poly[2] = {hi[0], hi[1]}, poly[3] = {lo[0], hi[1]};
   auto clip = [&](double nx, double ny, double c) {  // keep n.p > c
-    size_t n = poly.size(), kept = 0;
-    f.resize(n + 1);
+    size_t kept = 0;
     for (size_t i = 0; i < n; ++i) {
       f[i] = nx * poly[i][0] + ny * poly[i][1] - c;
       kept += f[i] > 0;
     }
     if (kept == n) return;  // (this is where the time goes: most clips cut nothing)
     f[n] = f[0];
-    next.clear();
+    size_t m = 0;
     for (size_t i = 0; i < n && kept > 0; ++i) {
       const auto &p = poly[i], &q = poly[i + 1 < n ? i + 1 : 0];
       double fp = f[i], fq = f[i + 1];
-      if (fp > 0) next.push_back(p);
+      if (fp > 0) next[m++] = p;
       if ((fp > 0) != (fq > 0) && fp != fq) {
         double s = fp / (fp - fq);
-        next.push_back({p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])});
+        next[m++] = {p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])};
       }
     }
-    poly.swap(next);
+    std::swap(poly, next);
+    n = m;
   };
   const double c = wedges ? cosMax_ : 0, s = wedges ? std::sqrt(1 - c * c) : 1;
   const double cm = cosMin_, sm = std::sqrt(1 - cm * cm);
-  for (size_t i = 0; i < linkEdges_.size() && !poly.empty(); ++i) {
+  for (size_t i = 0; i < linkEdges_.size() && n > 0; ++i) {
     const double *x = P(linkEdges_[i][0]), *y = P(linkEdges_[i][1]);
     double dx = y[0] - x[0], dy = y[1] - x[1];
     if (acute_ || nonObtuse_) {
@@ -1092,6 +1099,8 @@ void Refiner::clipToLinkSlabs(bool wedges) {
     }
     clip(-dy, dx, -dy * x[0] + dx * x[1]);
   }
+  if (poly != clipPoly_.data()) std::copy(poly, poly + n, clipPoly_.data());
+  clipPoly_.resize(n);
 }
 
 // The mean of clipPoly_'s corners (inside it, being convex), if it is a region at all.
