@@ -161,6 +161,7 @@ struct Strategy {
   // Repair first the bad triangle whose repair leaves the fewest bad triangles (evaluated on
   // its slice's points, see insertSparingSegments), not the largest (acute and non-obtuse).
   bool fewestBadFirst = false;
+  bool fallback = false;  // run only if no strategy before it met the target
 };
 
 class Refiner {
@@ -1816,11 +1817,14 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
       }
   } else if (options.mode == Mode::Acute) {
     strategies.push_back({false, false, true});
-    // Both again with the farthest point of the slice whatever it encroaches: on one CG:SHOP
-    // instance sparing the segments grades into a narrow wedge and ends a sliver short.
+    // Both again with the farthest point of the slice whatever it encroaches, as fallbacks:
+    // sparing the segments can grade into a narrow wedge and end a sliver short (it did on one
+    // CG:SHOP instance). Run every time, they saved 29 of CG:SHOP's 54,398 Steiner points, for
+    // about a tenth of the time.
     for (size_t i = 0; i < 2; ++i) {
       strategies.push_back(strategies[i]);
       strategies.back().weighPoints = false;
+      strategies.back().fallback = true;
     }
   }
   if (options.mode == Mode::NonObtuse || options.mode == Mode::Acute) {
@@ -1840,6 +1844,7 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
   };
   Run best;
   for (const Strategy& strategy : strategies) {
+    if (strategy.fallback && best.met) continue;
     // A later strategy stops once it has made as many points as the best so far.
     uint32_t cap = steinerCap;
     if (best.met) {
