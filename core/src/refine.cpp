@@ -973,8 +973,8 @@ bool Refiner::slide(uint32_t a) {
 }
 
 // Where along the segment line (parameter t strictly between tp and tq) a vertex with link
-// ring_ keeps every star triangle counter-clockwise, those in the domain (ringInside_) with
-// right or sharper angles: each
+// ring_ keeps every star triangle counter-clockwise, and (acute, non-obtuse) those in the
+// domain (ringInside_) with right or sharper angles: each
 // triangle (X(t), x, y) asks t to be on one side of three values (orientation, the angles at x
 // and y: linear in t) and outside the interval where the line crosses the diametral disk of
 // x-y (the angle at X). Leaves the stretches of t that are left in slideStretches_ (open
@@ -1010,7 +1010,9 @@ bool Refiner::slideStretches(double tp, double tq, const SegmentLine& line, doub
     double sy[2] = {s[0] - y[0], s[1] - y[1]}, xy[2] = {-yx[0], -yx[1]};
     const double yxPerp[2] = {yx[1], -yx[0]};  // X left of x->y: (X - x) . yxPerp < 0
     keep(yx[0] * sx[1] - yx[1] * sx[0], yx[0] * d[1] - yx[1] * d[0], mag(sx, yxPerp), mag(d, yxPerp));
-    if (!ringInside_[i]) continue;  // outside the domain only the orientation counts
+    // Outside the domain only the orientation counts; so it does for a minimum angle alone
+    // (quality), whose bounds are not taken here.
+    if (!ringInside_[i] || !(acute_ || nonObtuse_)) continue;
     keep(dot(sx, yx), dot(d, yx), mag(sx, yx), mag(d, yx));  // angle at x
     keep(dot(sy, xy), dot(d, xy), mag(sy, xy), mag(d, xy));  // angle at y
     double c[2] = {s[0] - 0.5 * (x[0] + y[0]), s[1] - 0.5 * (x[1] + y[1])};
