@@ -312,7 +312,10 @@ if (cgshopDir && existsSync(cgshopDir)) {
     spread.push(`- \`--mode ${mode}\`: median ${ms(at(0.5))} ms, 90th percentile ${ms(at(0.9))} ms, ` +
       `max ${ms(ts[ts.length - 1].t)} ms (${ts[ts.length - 1].uid}); ${ts.filter((x) => x.t > 0.1).length} of ${ts.length} over 100 ms.`);
   }
-  if (spread.length) cgSections.push('Time per instance (`seconds.total` from `--stats`, one run each):', '', ...spread, '');
+  if (spread.length)
+    cgSections.push(
+      `Time per instance (\`seconds.total\` from \`--stats\`, one run each, one instance at a time; acute and non-obtuse runs try their strategies on ${os.cpus().length} threads, the default, with the same meshes as on one):`,
+      '', ...spread, '');
   if (problems.length) cgSections.push('Instances not solved:', '', ...problems, '');
   if (!available('nonobtuse') || !available('acute')) {
     cgSections.push(`Modes not in this CLI yet (${['nonobtuse', 'acute'].filter((m) => !available(m)).join(', ')}): ` +

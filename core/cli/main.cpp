@@ -48,6 +48,8 @@ options:
                        point is near (integer coordinates), not within rounding of them (more
                        points; always on for CG:SHOP input, whose verifier is exact)
   --time-limit S       give up after S seconds (exit status 1)
+  --threads N          threads for acute and nonobtuse refinement (default: one per hardware
+                       thread; 1: none besides the main one); the mesh is the same for any N
   --stats              print one JSON object of figures on stdout
   --no-output          compute, write nothing (for timing)
   -h, --help           this text
@@ -238,6 +240,13 @@ static int run(int argc, char** argv) {
       opt.convexHull = true;
     } else if (a == "--exact-segments") {
       opt.exactSegments = true;
+    } else if (a == "--threads") {
+      char* end = nullptr;
+      if (!value(v)) return usageError("--threads needs a count");
+      unsigned long x = std::strtoul(v.c_str(), &end, 10);
+      if (*end || v.empty() || v[0] == '-' || x == 0 || x > 1024)
+        return usageError("--threads needs a count from 1 to 1024, not '" + v + "'");
+      opt.threads = unsigned(x);
     } else if (a == "--time-limit") {
       char* end = nullptr;
       if (!value(v)) return usageError("--time-limit needs seconds");

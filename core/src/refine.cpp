@@ -18,8 +18,14 @@
 // rounds of smoothing, removal and merging of neighbouring pairs (polish).
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <memory>
+#include <mutex>
+#if !defined(__EMSCRIPTEN__) || defined(__EMSCRIPTEN_PTHREADS__)
+#include <thread>
+#define ACUTEMESH_STRATEGY_THREADS 1
+#endif
 
 #include "acutemesh/predicates.h"
 #include "build.h"
@@ -164,6 +170,14 @@ struct Strategy {
   bool fallback = false;  // run only if no strategy before it met the target
 };
 
+// A run's Steiner limit where strategies run concurrently (refineWithStrategies): it may
+// tighten while the run goes on, so the run reads it at every check, and publishes the vertex
+// count it checked.
+struct SteinerGate {
+  std::atomic<uint32_t> limit{0};
+  std::atomic<uint32_t> checked{0};
+};
+
 class Refiner {
  public:
   Refiner(Triangulation& T, const Pslg& input, const Options& options, const Budget& budget,
@@ -190,8 +204,9 @@ class Refiner {
       cap += 4 * area / options.maxArea;
     }
     if (options.maxSteiner) cap = options.maxSteiner;
-    if (steinerCap) cap = std::min(cap, double(steinerCap));
-    steinerLimit_ = uint32_t(std::min(double(T.vertexCount()) + cap, double(kMaxVertices)));
+    budgetCap_ = cap;
+    startVertices_ = T.vertexCount();
+    steinerLimit_ = steinerLimitWith(steinerCap);
     if (options.maxArea > 0) {
       // About one vertex per two triangles of a third of the bound's area, within the budget,
       // and no more than two million more: a bound far too small for the time limit must not
@@ -221,6 +236,20 @@ class Refiner {
   }
 
   StepResult run();
+  // The vertex count at which a run with Steiner cap steinerCap (0: none) stops.
+  uint32_t steinerLimitWith(uint32_t steinerCap) const {
+    double cap = steinerCap ? std::min(budgetCap_, double(steinerCap)) : budgetCap_;
+    return uint32_t(std::min(double(startVertices_) + cap, double(kMaxVertices)));
+  }
+  // Checks the Steiner limit in gate (which the caller keeps) rather than its own, until
+  // leaveGate() sets its own to that for steinerCap.
+  void useGate(SteinerGate* gate) { gate_ = gate; }
+  void leaveGate(uint32_t steinerCap) {
+    gate_ = nullptr;
+    steinerLimit_ = steinerLimitWith(steinerCap);
+  }
+  // Progress reports are made on the thread that called mesh() only (see Options::progress).
+  void reportProgress(bool on) { reportProgress_ = on; }
   bool anyBad() const;
   StepResult runSteps();
   void polish();
@@ -390,6 +419,16 @@ class Refiner {
   double cosQuality_ = 1;  // of the angles qualityPoint() aims for (a little over minAngle)
   bool strictMax_ = false;  // acute with a bound below 90 degrees, checked in floating point
   uint32_t steinerLimit_ = 0;
+  double budgetCap_ = 0;  // Steiner points the options and defaults allow
+  uint32_t startVertices_ = 0;
+  SteinerGate* gate_ = nullptr;
+  bool reportProgress_ = true;
+  bool atSteinerLimit() {
+    const uint32_t n = T_.vertexCount();
+    if (!gate_) return n >= steinerLimit_;
+    gate_->checked.store(n);
+    return n >= gate_->limit.load();
+  }
   // No edge shorter than 2^-24 of the input's extent is made: refinement that would go
   // deeper (a narrow wedge it cannot fill) stops there and leaves the triangle to the
   // certificate, instead of spiralling into rounding noise.
@@ -1373,7 +1412,7 @@ void Refiner::cutAtFeet() {
       uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
       if (c.k < 0 || !c.large || !T_.isFixed(opposite)) continue;
       changed |= splitAtFoot(t, c.k);
-      if (T_.vertexCount() >= steinerLimit_) return;
+      if (atSteinerLimit()) return;
     }
     if (!changed) break;
   }
@@ -1470,10 +1509,10 @@ StepResult Refiner::repairAll() {
       if (budget_.stop())
         return {budget_.cancelled() ? Status::Cancelled : Status::TargetNotMet,
                 "time limit reached before every triangle met the target"};
-      if (options_.progress && (steps & 4095) == 0)
+      if (reportProgress_ && options_.progress && (steps & 4095) == 0)
         options_.progress({"refine", -1, T_.vertexCount()});
     }
-    if (T_.vertexCount() >= steinerLimit_)
+    if (atSteinerLimit())
       return {Status::TargetNotMet, "Steiner point budget used up before every triangle met "
                                     "the target"};
     const uint32_t t = entry.t;
@@ -1709,7 +1748,7 @@ void Refiner::markChanged() {
 // cancelled. Now and then it reports progress (phase "improve", the vertices in the mesh).
 bool Refiner::improvementShouldStop() {
   if ((++attempts_ & 63) != 0) return false;
-  if (options_.progress && (attempts_ & 4095) == 0)
+  if (reportProgress_ && options_.progress && (attempts_ & 4095) == 0)
     options_.progress({"improve", -1, uint32_t(input_.vertexCount() + liveSteiner())});
   return budget_.stop();
 }
@@ -1798,6 +1837,144 @@ void Refiner::mergeSteinerPoints() {
   }
 }
 
+// One strategy's run on its own copy of the triangulation.
+struct StrategyRun {
+  std::unique_ptr<Triangulation> T;
+  std::unique_ptr<Refiner> refiner;
+  StepResult result;
+  bool met = false;
+};
+
+// Which run refineWithStrategies keeps, the runs considered one after another: the first,
+// unless a later one meets the target with fewer Steiner points than the best so far. A later
+// run stops once it has made as many points as the best so far (cap()); none runs once that
+// leaves it no room, or the budget is out (done()).
+struct StrategyChoice {
+  StrategyChoice(const Triangulation& start, const Budget& budget, uint32_t steinerCap)
+      : startVertices(start.vertexCount()), budget(budget), steinerCap(steinerCap) {}
+  uint32_t cap() const {
+    if (!best.met) return steinerCap;
+    return uint32_t(best.T->vertexCount() - startVertices) - 1;
+  }
+  bool done() const {
+    if (best.T && (best.result.status == Status::Cancelled || budget.stop())) return true;
+    return best.met && best.T->vertexCount() - startVertices <= 1;
+  }
+  void consider(StrategyRun&& run) {
+    if (!best.T || (run.met && (!best.met || run.refiner->liveSteiner() < best.refiner->liveSteiner())))
+      best = std::move(run);
+  }
+  const size_t startVertices;
+  const Budget& budget;
+  const uint32_t steinerCap;
+  StrategyRun best;
+};
+
+#ifdef ACUTEMESH_STRATEGY_THREADS
+// Runs strategies [0, count) on threads, the calling one among them, and hands them to the
+// choice in order: with the same result as running them one after another (so every build,
+// threads or not, makes the same mesh). A run starts before those ahead of it are done, with
+// only the budget's cap; once they are, it gets the cap it would have had (StrategyChoice::cap)
+// through its SteinerGate. Had it already checked a vertex count at or over that cap, it would
+// have stopped there: it is stopped now and does not count. Otherwise it has gone just as it
+// would have, and goes on under the cap. (Its vertex count only grows until run() returns.)
+// Only the calling thread's runs report progress.
+class ConcurrentStrategies {
+ public:
+  ConcurrentStrategies(const Triangulation& T, const Pslg& input, const Options& options,
+                       const Budget& budget, const std::vector<Strategy>& strategies,
+                       size_t count, StrategyChoice& choice)
+      : T_(T), input_(input), options_(options), budget_(budget), strategies_(strategies),
+        choice_(choice), slots_(count), end_(count) {
+    slots_[0].cap = choice.cap();
+    slots_[0].capKnown = true;
+  }
+
+  void run(size_t threads) {
+    std::vector<std::thread> helpers;
+    for (size_t i = 1; i < threads; ++i) helpers.emplace_back([this] { work(false); });
+    work(true);
+    for (std::thread& helper : helpers) helper.join();
+  }
+
+ private:
+  struct Slot {
+    StrategyRun run;
+    SteinerGate gate;
+    bool started = false, finished = false, stopped = false;
+    uint32_t cap = 0;  // the cap it would have had, once known (capKnown)
+    bool capKnown = false;
+  };
+
+  void work(bool caller) {
+    for (;;) {
+      size_t i;
+      uint32_t cap;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (next_ >= end_) return;
+        i = next_++;
+        Slot& slot = slots_[i];
+        slot.started = true;
+        cap = slot.capKnown ? slot.cap : choice_.steinerCap;
+        slot.run.T = std::make_unique<Triangulation>(T_);
+        slot.run.refiner = std::make_unique<Refiner>(*slot.run.T, input_, options_, budget_,
+                                                     strategies_[i], cap);
+        slot.gate.limit = slot.run.refiner->steinerLimitWith(cap);
+        slot.run.refiner->useGate(&slot.gate);
+        slot.run.refiner->reportProgress(caller);
+      }
+      Slot& slot = slots_[i];
+      slot.run.result = slot.run.refiner->run();
+      slot.run.met = slot.run.result.ok() && !slot.run.refiner->anyBad();
+      std::lock_guard<std::mutex> lock(mutex_);
+      slot.finished = true;
+      handOver();
+    }
+  }
+
+  // (Under the lock.) Hands the finished runs at the front to the choice, in order, and gives
+  // the next one its cap.
+  void handOver() {
+    while (handed_ < end_ && slots_[handed_].finished) {
+      Slot& slot = slots_[handed_++];
+      if (slot.stopped) slot.run.met = false;
+      slot.run.refiner->leaveGate(slot.cap);
+      slot.run.refiner->reportProgress(true);
+      choice_.consider(std::move(slot.run));
+      slot.run = StrategyRun{};
+      if (choice_.done()) {  // none after it would have run: stop them
+        end_ = handed_;
+        for (size_t k = handed_; k < slots_.size(); ++k) slots_[k].gate.limit = 0;
+        return;
+      }
+      if (handed_ == end_) return;
+      Slot& nextSlot = slots_[handed_];
+      nextSlot.cap = choice_.cap();
+      nextSlot.capKnown = true;
+      if (nextSlot.started && !nextSlot.finished) {
+        const uint32_t limit = nextSlot.run.refiner->steinerLimitWith(nextSlot.cap);
+        nextSlot.gate.limit = limit;
+        if (nextSlot.gate.checked >= limit) nextSlot.stopped = true, nextSlot.gate.limit = 0;
+      } else if (nextSlot.finished) {
+        nextSlot.stopped = nextSlot.gate.checked >= nextSlot.run.refiner->steinerLimitWith(nextSlot.cap);
+      }
+    }
+  }
+
+  const Triangulation& T_;
+  const Pslg& input_;
+  const Options& options_;
+  const Budget& budget_;
+  const std::vector<Strategy>& strategies_;
+  StrategyChoice& choice_;
+  std::vector<Slot> slots_;
+  std::mutex mutex_;
+  size_t end_;  // the runs from here on are not started (and stopped if they were)
+  size_t next_ = 0, handed_ = 0;
+};
+#endif
+
 // The strategies of refine() in turn, then polish() on the one that met the target with the
 // fewest Steiner points; true if one met the target. steinerCap (0: none) bounds each run's
 // Steiner points.
@@ -1838,31 +2015,30 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
     first.fewestBadFirst = true;
     strategies.insert(strategies.begin(), first);
   }
-  struct Run {
-    std::unique_ptr<Triangulation> T;
-    std::unique_ptr<Refiner> refiner;
-    StepResult result;
-    bool met = false;
-  };
-  Run best;
-  for (const Strategy& strategy : strategies) {
-    if (strategy.fallback && best.met) continue;
-    // A later strategy stops once it has made as many points as the best so far.
-    uint32_t cap = steinerCap;
-    if (best.met) {
-      cap = uint32_t(best.T->vertexCount() - T.vertexCount());
-      if (cap <= 1) break;
-      --cap;
-    }
-    Run run;
+  StrategyChoice choice(T, budget, steinerCap);
+  size_t next = 0;
+#ifdef ACUTEMESH_STRATEGY_THREADS
+  // The strategies before the fallbacks concurrently, where there are threads to spare.
+  size_t leading = 0;
+  while (leading < strategies.size() && !strategies[leading].fallback) ++leading;
+  unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
+  if (threads > 1 && leading > 1) {
+    ConcurrentStrategies(T, input, options, budget, strategies, leading, choice)
+        .run(std::min<size_t>(threads, leading));
+    next = leading;
+  }
+#endif
+  for (; next < strategies.size() && !choice.done(); ++next) {
+    const Strategy& strategy = strategies[next];
+    if (strategy.fallback && choice.best.met) continue;
+    StrategyRun run;
     run.T = std::make_unique<Triangulation>(T);
-    run.refiner = std::make_unique<Refiner>(*run.T, input, options, budget, strategy, cap);
+    run.refiner = std::make_unique<Refiner>(*run.T, input, options, budget, strategy, choice.cap());
     run.result = run.refiner->run();
     run.met = run.result.ok() && !run.refiner->anyBad();
-    if (!best.T || (run.met && (!best.met || run.refiner->liveSteiner() < best.refiner->liveSteiner())))
-      best = std::move(run);
-    if (best.result.status == Status::Cancelled || budget.stop()) break;
+    choice.consider(std::move(run));
   }
+  StrategyRun& best = choice.best;
   if (best.met) best.refiner->polish();
   // Cancelled while improving: the mesh meets the target, but the caller asked to stop.
   if (budget.cancelled() && best.result.ok())

@@ -326,3 +326,45 @@ TEST(Refine, PlateAirfoilAndGlyphs) {
     }
   }
 }
+
+// Acute and non-obtuse refinement runs its strategies on threads where it can (the later ones
+// start before the earlier ones are done, and get their caps while they run): the mesh must
+// be the one the strategies make one after another, bit for bit, for any thread count.
+TEST(Refine, ThreadsMakeTheSameMesh) {
+  struct Case {
+    std::string path;
+    Mode mode;
+    double maxAngle;
+    uint32_t maxSteiner;
+  };
+  const std::string cgshop = std::string(kShared) + "/cgshop2025/";
+  const std::vector<Case> cases = {
+      {std::string(kShared) + "/poly/A.poly", Mode::Acute, 90, 0},
+      {std::string(kShared) + "/poly/superior.poly", Mode::NonObtuse, 90, 0},
+      {std::string(kShared) + "/poly/superior.poly", Mode::Acute, 85, 0},
+      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::NonObtuse, 90, 0},
+      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::Acute, 90, 0},
+      {cgshop + "point-set_150_1fb326cf.instance.json", Mode::NonObtuse, 90, 0},
+      // A Steiner budget that stops every strategy short.
+      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::Acute, 90, 300},
+  };
+  for (const Case& c : cases) {
+    Pslg in = load(c.path);
+    Options o;
+    o.mode = c.mode;
+    o.maxAngle = c.maxAngle;
+    o.maxSteiner = c.maxSteiner;
+    o.exactSegments = c.path.find("cgshop") != std::string::npos;
+    o.threads = 1;
+    Result one = mesh(in, o);
+    for (unsigned threads : {2u, 3u, 8u}) {
+      o.threads = threads;
+      Result many = mesh(in, o);
+      const std::string what = c.path + " with " + std::to_string(threads) + " threads";
+      EXPECT_EQ(many.status, one.status) << what;
+      EXPECT_TRUE(many.mesh.points == one.mesh.points) << what;
+      EXPECT_TRUE(many.mesh.triangles == one.mesh.triangles) << what;
+      EXPECT_EQ(many.stats.steiner, one.stats.steiner) << what;
+    }
+  }
+}

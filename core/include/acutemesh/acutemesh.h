@@ -75,6 +75,10 @@ struct Options {
   // checker such as the CG:SHOP 2025 verifier needs. Otherwise they are rounded (a few ulps
   // off the line, which leaves refinement some slack: CG:SHOP non-obtuse about 15% fewer points).
   bool exactSegments = false;
+  // Threads for acute and non-obtuse refinement, which tries a few strategies at once where it
+  // can (0: one per hardware thread; 1: the calling thread alone). The mesh is the same either
+  // way, and in every build (WebAssembly runs them one after another).
+  unsigned threads = 0;
   const std::atomic<bool>* cancel = nullptr;          // set to true to stop early
   // Called at the end of each phase and now and then during refinement (from the thread
   // running mesh()); keep it cheap.
