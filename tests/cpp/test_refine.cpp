@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <string>
+#include <thread>
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
@@ -368,3 +370,25 @@ TEST(Refine, ThreadsMakeTheSameMesh) {
     }
   }
 }
+
+#ifndef __EMSCRIPTEN__
+// Cancelled from another thread while the strategies run on theirs: every thread stops, and
+// the best mesh so far comes back valid.
+TEST(Refine, CancelWhileStrategiesRunOnThreads) {
+  Pslg in = load(std::string(kShared) + "/cgshop2025/simple-polygon-exterior_250_c0a19392.instance.json");
+  Options o;
+  o.mode = Mode::Acute;
+  o.exactSegments = true;
+  o.threads = 4;
+  std::atomic<bool> cancel{false};
+  o.cancel = &cancel;
+  std::thread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(15));  // the whole run takes ~0.2 s
+    cancel = true;
+  });
+  Result r = mesh(in, o);
+  canceller.join();
+  EXPECT_EQ(r.status, Status::Cancelled) << r.message;
+  expectValid(in, o, r, "cancelled on threads");
+}
+#endif
