@@ -116,6 +116,15 @@ check "unknown mode" run 2 --mode fast "$work/A.poly"
 check "bad max angle" run 2 --mode acute --max-angle 50 "$work/A.poly"
 check "bad max angle message" stderr_has "--max-angle must be above 60"
 check "bad steiner budget" run 2 --mode acute --max-steiner x "$work/A.poly"
+for bad in 0 -2 x 2000; do
+  check "bad thread count $bad" run 2 --mode acute --threads "$bad" "$work/A.poly"
+  check "bad thread count $bad message" stderr_has "--threads needs a count from 1 to 1024, not '$bad'"
+done
+# The thread count changes the time, never the mesh.
+check "one thread" run 0 --mode nonobtuse --threads 1 -o "$work/t1" "$work/A.poly"
+check "three threads" run 0 --mode nonobtuse --threads 3 -o "$work/t3" "$work/A.poly"
+check "same mesh on 1 and 3 threads" cmp -s "$work/t1.ele" "$work/t3.ele"
+check "same points on 1 and 3 threads" cmp -s "$work/t1.node" "$work/t3.node"
 check "unknown format" run 2 --format png "$work/A.poly"
 check "no input" run 2
 check "two inputs" run 2 "$work/A.poly" "$work/A.poly"
