@@ -5,7 +5,7 @@
 // or atan2 alike (nor hypot, pow, exp2, log2). IEEE 754 rounds +, -, *, / and sqrt correctly
 // everywhere, and the core is compiled without fused multiply-add, so a fixed sequence of
 // those operations gives the same bits on every platform. Accuracy: within a few units in the
-// last place (tests/cpp/test_refine.cpp, PortableMath), plenty for where they are used (corner
+// last place (tests/cpp/test_predicates.cpp, PortableMath), plenty for where they are used (corner
 // fans' directions and arc points, angle bounds' cosines).
 #pragma once
 

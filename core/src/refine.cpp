@@ -263,6 +263,10 @@ class Refiner {
  private:
   const double* P(uint32_t v) const { return T_.point(v); }
   Corner worstCorner(uint32_t t) const;
+  // Triangle slot t is a triangle of the domain that misses the target.
+  bool missesTarget(uint32_t t) const {
+    return !T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0;
+  }
   Corner worstCorner(const double* const p[3]) const;
   double shortestEdge2(uint32_t t) const;
   bool repair(uint32_t t, Corner c);
@@ -270,6 +274,9 @@ class Refiner {
   // well inside, else by the shell rule.
   bool splitSubsegment(uint32_t e, double preferred = -1);
   double shellRatio(uint32_t e) const;
+  double splitRatio(uint32_t e, double preferred) const {
+    return preferred > 0.01 && preferred < 0.99 ? preferred : shellRatio(e);
+  }
   bool splitChord(uint32_t e);
   void buildCornerFans();
   double readStar(uint32_t v);
@@ -486,14 +493,15 @@ double Refiner::shellRatio(uint32_t e) const {
   return role_[a] == kInput ? shell / len : 1 - shell / len;
 }
 
-// Splits the subsegment of fixed half-edge e, at shellRatio() unless `preferred` is given.
+// Splits the subsegment of fixed half-edge e, at shellRatio() unless `preferred` is given and
+// well inside (splitRatio).
 bool Refiner::splitSubsegment(uint32_t e, double preferred) {
   if (isChord(e)) return splitChord(e);
   uint32_t a = T_.tri[e], b = T_.tri[next(e)];
   // Copies: adding a vertex may move the coordinate array.
   const double pa[2] = {P(a)[0], P(a)[1]}, pb[2] = {P(b)[0], P(b)[1]};
   if (dist2(pa, pb) < 4 * minEdge2_) return false;
-  double s = preferred > 0.01 && preferred < 0.99 ? preferred : shellRatio(e);
+  double s = splitRatio(e, preferred);
   uint32_t seg = T_.segment[e];
   SegmentLine line = segmentLine(seg, pa, pb);
   double ta = line.param(pa), tb = line.param(pb);
@@ -1391,9 +1399,8 @@ bool Refiner::splitWeighed(uint32_t e, const double* apex) {
   for (size_t i = 0; i < std::size(ratios); ++i) {
     double r = ratios[i];
     if (i > 0 && (r == usual || !(r > 0.05 && r < 0.95))) continue;
-    double ratio = r > 0.01 && r < 0.99 ? r : shellRatio(e);  // as splitSubsegment decides
     double m[2];
-    line.at(ta + ratio * (tb - ta), m);
+    line.at(ta + splitRatio(e, r) * (tb - ta), m);  // where splitSubsegment(e, r) splits
     int change = splitBadChange(e, m);
     if (change < fewest) fewest = change, best = r;
   }
@@ -1545,7 +1552,7 @@ StepResult Refiner::repairAll() {
 bool Refiner::holeMeetsTarget() {
   moved_.clear();
   for (uint32_t t : hole_) {
-    if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t) || worstCorner(t).k < 0) continue;
+    if (!missesTarget(t)) continue;
     bool repaired = false;
     for (uint32_t k = 0; k < 3 && !repaired; ++k) {
       uint32_t a = T_.tri[3 * t + k];
@@ -1694,7 +1701,7 @@ bool Refiner::tryMerge(uint32_t u, uint32_t w) {
       uint32_t bad = kNone;
       for (size_t i = 0; merged == 0 && i < touched_.size() && bad == kNone; ++i) {
         uint32_t t = touched_[i];
-        if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) bad = t;
+        if (missesTarget(t)) bad = t;
       }
       if (bad != kNone) {
         slicePoints(bad, candidates_);
@@ -1721,7 +1728,7 @@ bool Refiner::tryMerge(uint32_t u, uint32_t w) {
 // Some triangle of the domain misses the target.
 bool Refiner::anyBad() const {
   for (uint32_t t = 0; t < T_.triangleSlots(); ++t)
-    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) return true;
+    if (missesTarget(t)) return true;
   return false;
 }
 
@@ -1839,6 +1846,15 @@ void Refiner::mergeSteinerPoints() {
 
 // One strategy's run on its own copy of the triangulation.
 struct StrategyRun {
+  StrategyRun() = default;
+  StrategyRun(const Triangulation& start, const Pslg& input, const Options& options,
+              const Budget& budget, const Strategy& strategy, uint32_t steinerCap)
+      : T(std::make_unique<Triangulation>(start)),
+        refiner(std::make_unique<Refiner>(*T, input, options, budget, strategy, steinerCap)) {}
+  void go() {
+    result = refiner->run();
+    met = result.ok() && !refiner->anyBad();
+  }
   std::unique_ptr<Triangulation> T;
   std::unique_ptr<Refiner> refiner;
   StepResult result;
@@ -1876,7 +1892,9 @@ struct StrategyChoice {
 // threads or not, makes the same mesh). A run starts before those ahead of it are done, with
 // only the budget's cap; once they are, it gets the cap it would have had (StrategyChoice::cap)
 // through its SteinerGate. Had it already checked a vertex count at or over that cap, it would
-// have stopped there: it is stopped now and does not count. Otherwise it has gone just as it
+// have stopped there: it is stopped now and does not count. (The new limit is stored before
+// the last count checked is read: a check at or over it either shows in that count or sees
+// the new limit and stops the run.) Otherwise it has gone just as it
 // would have, and goes on under the cap. (Its vertex count only grows until run() returns.)
 // Only the calling thread's runs report progress.
 class ConcurrentStrategies {
@@ -1887,7 +1905,6 @@ class ConcurrentStrategies {
       : T_(T), input_(input), options_(options), budget_(budget), strategies_(strategies),
         choice_(choice), slots_(count), end_(count) {
     slots_[0].cap = choice.cap();
-    slots_[0].capKnown = true;
   }
 
   void run(size_t threads) {
@@ -1898,35 +1915,30 @@ class ConcurrentStrategies {
   }
 
  private:
+  // Slots [0, next_) are started, [0, handed_) handed over; slot handed_ knows its cap.
   struct Slot {
     StrategyRun run;
     SteinerGate gate;
-    bool started = false, finished = false, stopped = false;
-    uint32_t cap = 0;  // the cap it would have had, once known (capKnown)
-    bool capKnown = false;
+    bool finished = false, stopped = false;
+    uint32_t cap = 0;  // the cap it would have had (from when it is slot handed_)
   };
 
   void work(bool caller) {
     for (;;) {
       size_t i;
-      uint32_t cap;
       {
         std::lock_guard<std::mutex> lock(mutex_);
         if (next_ >= end_) return;
         i = next_++;
         Slot& slot = slots_[i];
-        slot.started = true;
-        cap = slot.capKnown ? slot.cap : choice_.steinerCap;
-        slot.run.T = std::make_unique<Triangulation>(T_);
-        slot.run.refiner = std::make_unique<Refiner>(*slot.run.T, input_, options_, budget_,
-                                                     strategies_[i], cap);
+        const uint32_t cap = i == handed_ ? slot.cap : choice_.steinerCap;
+        slot.run = StrategyRun(T_, input_, options_, budget_, strategies_[i], cap);
         slot.gate.limit = slot.run.refiner->steinerLimitWith(cap);
         slot.run.refiner->useGate(&slot.gate);
         slot.run.refiner->reportProgress(caller);
       }
       Slot& slot = slots_[i];
-      slot.run.result = slot.run.refiner->run();
-      slot.run.met = slot.run.result.ok() && !slot.run.refiner->anyBad();
+      slot.run.go();
       std::lock_guard<std::mutex> lock(mutex_);
       slot.finished = true;
       handOver();
@@ -1951,13 +1963,10 @@ class ConcurrentStrategies {
       if (handed_ == end_) return;
       Slot& nextSlot = slots_[handed_];
       nextSlot.cap = choice_.cap();
-      nextSlot.capKnown = true;
-      if (nextSlot.started && !nextSlot.finished) {
+      if (handed_ < next_) {  // started: the limit goes in before `checked` is read (see above)
         const uint32_t limit = nextSlot.run.refiner->steinerLimitWith(nextSlot.cap);
         nextSlot.gate.limit = limit;
         if (nextSlot.gate.checked >= limit) nextSlot.stopped = true, nextSlot.gate.limit = 0;
-      } else if (nextSlot.finished) {
-        nextSlot.stopped = nextSlot.gate.checked >= nextSlot.run.refiner->steinerLimitWith(nextSlot.cap);
       }
     }
   }
@@ -2031,11 +2040,8 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
   for (; next < strategies.size() && !choice.done(); ++next) {
     const Strategy& strategy = strategies[next];
     if (strategy.fallback && choice.best.met) continue;
-    StrategyRun run;
-    run.T = std::make_unique<Triangulation>(T);
-    run.refiner = std::make_unique<Refiner>(*run.T, input, options, budget, strategy, choice.cap());
-    run.result = run.refiner->run();
-    run.met = run.result.ok() && !run.refiner->anyBad();
+    StrategyRun run(T, input, options, budget, strategy, choice.cap());
+    run.go();
     choice.consider(std::move(run));
   }
   StrategyRun& best = choice.best;
