@@ -47,6 +47,10 @@ options:
   --exact-segments     put Steiner points exactly on their segments' lines where a representable
                        point is near (integer coordinates), not within rounding of them (more
                        points; always on for CG:SHOP input, whose verifier is exact)
+  --exact-feet         nonobtuse: Steiner points on segments may be exact altitude feet, rationals
+                       a double cannot hold (far fewer points on tilted segments). They are exact
+                       in the cgshop and json formats, rounded in the others; --stats counts
+                       them as exactPoints (default for CG:SHOP input; --no-exact-feet: off)
   --time-limit S       give up after S seconds (exit status 1)
   --threads N          threads for acute and nonobtuse refinement (default: one per hardware
                        thread; 1: none besides the main one); the mesh is the same for any N
@@ -131,8 +135,8 @@ void printStats(const std::string& input, const Options& opt, const Result& r,
   std::printf(" \"inputVertices\": %u, \"inputSegments\": %u, \"inputHoles\": %u,\n",
               s.inputVertices, s.inputSegments, s.inputHoles);
   std::printf(" \"vertices\": %u, \"triangles\": %u, \"segments\": %u, \"steiner\": %u, "
-              "\"duplicates\": %u,\n",
-              s.vertices, s.triangles, s.segments, s.steiner, s.duplicates);
+              "\"exactPoints\": %zu, \"duplicates\": %u,\n",
+              s.vertices, s.triangles, s.segments, s.steiner, r.mesh.exactPoints.size(), s.duplicates);
   std::printf(" \"minAngle\": %.17g, \"maxAngle\": %.17g, \"nonAcute\": %u, \"obtuse\": %u,\n",
               s.minAngle, s.maxAngle, s.nonAcute, s.obtuse);
   std::printf(" \"targetMet\": %s, \"certified\": %s, \"smallestInputAngle\": %.17g,\n",
@@ -168,6 +172,7 @@ static int run(int argc, char** argv) {
   bool cgshop = false;  // --format cgshop: BASE.solution.json, written apart from the others
   Options opt;
   bool fillGiven = false, wantStats = false, writeOutput = true;
+  int exactFeet = -1;  // --exact-feet 1, --no-exact-feet 0, neither: by input format
 
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -240,6 +245,8 @@ static int run(int argc, char** argv) {
       opt.convexHull = true;
     } else if (a == "--exact-segments") {
       opt.exactSegments = true;
+    } else if (a == "--exact-feet" || a == "--no-exact-feet") {
+      exactFeet = a == "--exact-feet" ? 1 : 0;
     } else if (a == "--threads") {
       char* end = nullptr;
       if (!value(v)) return usageError("--threads needs a count");
@@ -282,6 +289,8 @@ static int run(int argc, char** argv) {
   // The CG:SHOP verifier is exact: a split point an ulp off its segment would leave a sliver
   // between the segment and the mesh's edges.
   if (in.format == InputFormat::CgshopInstance) opt.exactSegments = true;
+  // CG:SHOP solutions hold rationals: altitude feet can be exact there.
+  opt.exactFeet = exactFeet < 0 ? in.format == InputFormat::CgshopInstance : exactFeet == 1;
 
   // On a terminal, runs longer than a second show where they are, on one stderr line.
   bool progressShown = false;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "acutemesh/acutemesh.h"
+#include "exact.h"
 #include "triangulation.h"
 
 namespace acutemesh::detail {
@@ -57,12 +58,23 @@ std::vector<uint8_t> classifyDomain(const Triangulation& T, const Pslg& input,
                                     const Options& options, bool keepHull,
                                     std::vector<std::string>& warnings);
 
+// A vertex of T whose exact position is a rational a double cannot hold (Options::exactFeet):
+// T holds a double on the same segment line within rounding of it.
+struct ExactVertex {
+  uint32_t vertex;
+  RationalPoint at;
+};
+
 // Refines T (with T.inside set to the domain) toward options' target: acute / non-obtuse /
 // quality. The vertices it adds on no input segment are marked in freeVertex (the rest lie
 // on input segments). Returns TargetNotMet or Cancelled when a budget
 // stops it; triangles it could not repair are left for the caller's certificate to count.
+// With options.exactFeet (non-obtuse), the vertices standing for exact altitude feet are
+// listed in `exact` with those positions; every triangle around them has been checked exactly
+// there (unless a budget stopped the run: the caller's certificate counts).
 StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
-                  const Budget& budget, std::vector<uint8_t>& freeVertex);
+                  const Budget& budget, std::vector<uint8_t>& freeVertex,
+                  std::vector<ExactVertex>& exact);
 
 // The predicates are exact while products of coordinate differences neither overflow nor
 // underflow: every non-zero coordinate within about 2^-166 .. 2^166 (see predicates.h).

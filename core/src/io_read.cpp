@@ -1385,7 +1385,8 @@ bool readRing(JsonReader& r, JsonDoc& d) {
 }
 
 JsonKind keyKind(const std::string& key) {
-  if (key == "vertices" || key == "segments" || key == "holes" || key == "triangles")
+  if (key == "vertices" || key == "segments" || key == "holes" || key == "triangles" ||
+      key == "exactPoints")
     return JsonKind::Pslg;
   if (key == "rings") return JsonKind::Rings;
   if (key == "instance_uid" || key == "num_points" || key == "points_x" || key == "points_y" ||
@@ -1408,7 +1409,8 @@ bool readMember(JsonReader& r, JsonDoc& d, const std::string& key, size_t keyLin
     return c.fail(keyLine, std::string("expected the keys of ") + kindName(d.kind) +
                                " as \"" + d.kindKey + "\" says, found \"" + key + "\"");
   }
-  if (key == "triangles") return r.skipValue(1);  // a mesh written by formatJson: ignored
+  // A mesh written by formatJson: its triangles and exact points are ignored.
+  if (key == "triangles" || key == "exactPoints") return r.skipValue(1);
   if (key == "vertices") {
     d.hasVertices = true;
     return r.array("the \"vertices\" array", [&] { return readPoint(r, d.points, "a vertex"); });

@@ -269,7 +269,21 @@ std::string formatJson(const Mesh& m) {
     putUint(s, m.segments[2 * i + 1]);
     s += ']';
   }
-  s += "]\n}\n";
+  s += ']';
+  if (!m.exactPoints.empty()) {
+    s += ",\n\"exactPoints\": [";
+    for (size_t i = 0; i < m.exactPoints.size(); ++i) {
+      s += i ? ",\n[" : "\n[";
+      putUint(s, m.exactPoints[i].vertex);
+      s += ',';
+      putJsonString(s, m.exactPoints[i].x);
+      s += ',';
+      putJsonString(s, m.exactPoints[i].y);
+      s += ']';
+    }
+    s += ']';
+  }
+  s += "\n}\n";
   return s;
 }
 
@@ -432,11 +446,23 @@ std::string formatCgshopSolution(const Mesh& m, const std::string& instanceUid,
   s.reserve(steiner.size() * 64 + edges.size() * 24 + instanceUid.size() + 160);
   s += "{\n\"content_type\": \"CG_SHOP_2025_Solution\",\n\"instance_uid\": ";
   putJsonString(s, instanceUid);
+  // Exact points (Options::exactFeet) as their rationals, sorted by vertex.
+  std::vector<const ExactPoint*> exact(n, nullptr);
+  for (const ExactPoint& p : m.exactPoints)
+    if (p.vertex < n) exact[p.vertex] = &p;
   for (int axis = 0; axis < 2; ++axis) {
     s += axis ? "],\n\"steiner_points_y\": [" : ",\n\"steiner_points_x\": [";
     for (size_t k = 0; k < steiner.size(); ++k) {
       s += k ? ",\n" : "\n";
-      putExactRational(s, m.points[2 * steiner[k] + axis]);
+      const ExactPoint* p = exact[steiner[k]];
+      const std::string* text = p ? (axis ? &p->y : &p->x) : nullptr;
+      if (!text) {
+        putExactRational(s, m.points[2 * steiner[k] + axis]);
+      } else if (text->find('/') == std::string::npos) {
+        s += *text;  // an integer: a JSON number, as for doubles
+      } else {
+        putJsonString(s, *text);
+      }
     }
   }
   s += "],\n\"edges\": [";

@@ -46,7 +46,8 @@ std::string checkInput(const Pslg& in) {
 // the Steiner points that are used after them.
 void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
                  const Pslg& input, const std::vector<uint32_t>& inputOf,
-                 const std::vector<uint8_t>& freeVertex, Mesh& mesh) {
+                 const std::vector<uint8_t>& freeVertex,
+                 const std::vector<detail::ExactVertex>& exact, Mesh& mesh) {
   uint32_t slots = T.triangleSlots(), total = T.vertexCount();
   uint32_t inputCount = uint32_t(inputOf.size());
   // index: store vertex -> output vertex. Input vertices keep their input index.
@@ -75,6 +76,13 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
     mesh.points[2 * size_t(index[v]) + 1] = T.pts[2 * size_t(v) + 1];
     if (v < freeVertex.size() && freeVertex[v]) mesh.vertexKind[index[v]] = kFreeVertex;
   }
+  mesh.exactPoints.clear();
+  for (const detail::ExactVertex& x : exact)
+    if (index[x.vertex] != kNone)
+      mesh.exactPoints.push_back({index[x.vertex], detail::rationalText(x.at.x, x.at.w),
+                                  detail::rationalText(x.at.y, x.at.w)});
+  std::sort(mesh.exactPoints.begin(), mesh.exactPoints.end(),
+            [](const ExactPoint& a, const ExactPoint& b) { return a.vertex < b.vertex; });
   mesh.triangles.resize(3 * size_t(triangles));
   mesh.segments.clear();
   uint32_t* out = mesh.triangles.data();
@@ -99,21 +107,30 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
 // Runs on the store (vertices in insertion order) rather than on the output, whose input
 // numbering scatters neighbours across memory.
 // Also returns the largest triangle area (floating point, as refinement measures it).
-double measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside, Stats& stats) {
+// Triangles at a vertex in `exact` are counted with its exact position.
+double measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside,
+                     const std::vector<detail::ExactVertex>& exact, Stats& stats) {
   double cosSmallest = -1, cosLargest = 1;  // of the smallest and the largest angle seen
   double largestArea = 0;
   uint32_t nonAcute = 0, obtuse = 0, count = 0;
+  std::vector<const detail::RationalPoint*> exactAt(exact.empty() ? 0 : T.vertexCount(), nullptr);
+  for (const detail::ExactVertex& x : exact) exactAt[x.vertex] = &x.at;
   for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
     if (!inside[t]) continue;
     ++count;
+    const uint32_t* v = &T.tri[3 * t];
     const double* p[3];
-    for (int k = 0; k < 3; ++k) p[k] = T.point(T.tri[3 * t + k]);
+    for (int k = 0; k < 3; ++k) p[k] = T.point(v[k]);
     double len2[3];  // squared length of the edge opposite corner k
     bool right = false, blunt = false;
+    const bool atExact = !exactAt.empty() && (exactAt[v[0]] || exactAt[v[1]] || exactAt[v[2]]);
+    detail::RationalPoint q[3];
+    for (int k = 0; atExact && k < 3; ++k)
+      q[k] = exactAt[v[k]] ? *exactAt[v[k]] : detail::exactPoint(p[k]);
     for (int k = 0; k < 3; ++k) {
       const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
       len2[k] = (b[0] - c[0]) * (b[0] - c[0]) + (b[1] - c[1]) * (b[1] - c[1]);
-      double d = dot2d(a, b, c);
+      int d = atExact ? detail::dotSign(q[k], q[(k + 1) % 3], q[(k + 2) % 3]) : sign(dot2d(a, b, c));
       right |= d <= 0;
       blunt |= d < 0;
     }
@@ -131,7 +148,8 @@ double measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside,
       return dot / std::sqrt(len2[(k + 1) % 3] * len2[(k + 2) % 3]);
     };
     cosSmallest = std::max(cosSmallest, cosAt(lo));
-    cosLargest = std::min(cosLargest, cosAt(hi));
+    // (At an exact foot the double's angle may be a hair over the exact right angle.)
+    cosLargest = std::min(cosLargest, atExact && !blunt ? std::max(0.0, cosAt(hi)) : cosAt(hi));
   }
   auto degrees = [](double c) { return std::acos(std::max(-1.0, std::min(1.0, c))) * (180.0 / M_PI); };
   stats.minAngle = count ? degrees(cosSmallest) : 0;
@@ -362,10 +380,11 @@ Result meshInRange(const Pslg& input, const Options& options) {
     target.minAngle = 20;  // Triangle's -q default
   if (refining) warnAboutInputAngles(input, target, stats);
   std::vector<uint8_t> freeVertex;
+  std::vector<detail::ExactVertex> exact;
   if (refining) {
     T.inside = std::move(inside);
     T.inside.resize(T.tri.size() / 3, 0);
-    step = detail::refine(T, input, target, budget, freeVertex);
+    step = detail::refine(T, input, target, budget, freeVertex, exact);
     inside = std::move(T.inside);
     endPhase("refine");
     if (step.status == Status::Cancelled || step.status == Status::TargetNotMet) {
@@ -374,14 +393,14 @@ Result meshInRange(const Pslg& input, const Options& options) {
     }
   }
 
-  extractMesh(T, inside, input, inputOf, freeVertex, result.mesh);
+  extractMesh(T, inside, input, inputOf, freeVertex, exact, result.mesh);
   stats.vertices = uint32_t(result.mesh.vertexCount());
   stats.triangles = uint32_t(result.mesh.triangleCount());
   stats.segments = uint32_t(result.mesh.segments.size() / 2);
   stats.steiner = stats.vertices - n;
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
-  double largestArea = measureAngles(T, inside, stats);
+  double largestArea = measureAngles(T, inside, exact, stats);
   if (refining) certify(target, largestArea, stats, result);
   endPhase("output");
   stats.seconds = budget.elapsed();
@@ -415,6 +434,7 @@ Result meshScaled(const Pslg& input, const Options& options) {
   detail::scaleExactly(scaled.points, -exponent);
   detail::scaleExactly(scaled.holes, -exponent);
   Options scaledOptions = options;
+  scaledOptions.exactFeet = false;  // their rationals would have to be scaled back too
   if (options.maxArea > 0 && std::isfinite(options.maxArea)) {
     // An area bound beyond the double range once scaled bounds nothing; one below it is as
     // small as can be asked for.

@@ -187,9 +187,11 @@ class Refiner {
     role_.assign(T.vertexCount(), kOnSegment);  // crossing points made by the CDT lie on segments
     std::fill(role_.begin(), role_.begin() + inputCount, kInput);
     fanCenter_.assign(T.vertexCount(), kNone);
+    footOf_.assign(T.vertexCount(), kNone);
     fanRadius_.assign(inputCount, 0);
     acute_ = options.mode == Mode::Acute;
     nonObtuse_ = options.mode == Mode::NonObtuse;
+    feet_ = nonObtuse_ && options.exactFeet;
     cosMax_ = portableCos(options.maxAngle * kDegree);
     strictMax_ = acute_ && options.maxAngle < 90;
     cosMin_ = portableCos(options.minAngle * kDegree);
@@ -216,6 +218,7 @@ class Refiner {
       T.reserveCapacity(size_t(vertices), 2 * size_t(vertices) + 16);
       role_.reserve(size_t(vertices));
       fanCenter_.reserve(size_t(vertices));
+      footOf_.reserve(size_t(vertices));
     }
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < input.points.size(); ++i)
@@ -254,6 +257,7 @@ class Refiner {
   StepResult runSteps();
   void polish();
   size_t liveSteiner() const;
+  bool exactFeet(std::vector<ExactVertex>& out) const;
   void markFree(std::vector<uint8_t>& out) const {
     out.resize(role_.size());
     for (size_t v = 0; v < role_.size(); ++v)
@@ -267,12 +271,17 @@ class Refiner {
   bool missesTarget(uint32_t t) const {
     return !T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0;
   }
-  Corner worstCorner(const double* const p[3]) const;
+  // footCorners: corners that may stand for exact right angles (see footCorners(t)).
+  Corner worstCorner(const double* const p[3], int footCorners = 0) const;
+  int footCorners(uint32_t t) const;
+  bool footEdge(uint32_t e) const { return T_.isFixed(e) && !isChord(e); }
+  void segmentEnds(uint32_t f, uint32_t spoke, const double*& a, const double*& b) const;
   double shortestEdge2(uint32_t t) const;
   bool repair(uint32_t t, Corner c);
   // Splits at `preferred` (a fraction of the way from the edge's first end) when given and
   // well inside, else by the shell rule.
-  bool splitSubsegment(uint32_t e, double preferred = -1);
+  // footOf: the vertex whose altitude foot `preferred` is (see footOf_).
+  bool splitSubsegment(uint32_t e, double preferred = -1, uint32_t footOf = kNone);
   double shellRatio(uint32_t e) const;
   double splitRatio(uint32_t e, double preferred) const {
     return preferred > 0.01 && preferred < 0.99 ? preferred : shellRatio(e);
@@ -292,8 +301,8 @@ class Refiner {
   std::vector<Spoke> spokes_;
   void cutAtFeet();
   bool splitAtFoot(uint32_t t, int k);
-  bool splitWeighed(uint32_t e, const double* apex);
-  int splitBadChange(uint32_t e, const double* m);
+  bool splitWeighed(uint32_t e, uint32_t apex);
+  int splitBadChange(uint32_t e, const double* m, uint32_t footOf);
   void releaseChords();
   // The subsegment on the rim of x's cavity (seen from triangle `from`) that x encroaches,
   // the longest if several, and the first fixed edge x lies beyond; kNone where none.
@@ -384,7 +393,7 @@ class Refiner {
   void qualityPoints(uint32_t t, std::vector<std::array<double, 3>>& out) const;
   bool insertSparingSegments(uint32_t t, const std::vector<std::array<double, 3>>& points,
                              bool fewestBad);
-  int badChange(const double* x, uint32_t split = kNone) const;
+  int badChange(const double* x, uint32_t split = kNone, uint32_t footOf = kNone) const;
   size_t weighCandidates(uint32_t t, const std::vector<std::array<double, 3>>& points, int& fewest);
   // Triangle t's shortest edge pq and its circumcircle: where the Steiner point searches start.
   struct ShortestEdge {
@@ -397,6 +406,7 @@ class Refiner {
   uint32_t addVertex(const double* p, VertexRole role, uint32_t fanCenter = kNone) {
     role_.push_back(role);
     fanCenter_.push_back(fanCenter);
+    footOf_.push_back(kNone);
     return T_.addVertex(p[0], p[1]);
   }
   void dropLastVertex() {
@@ -404,6 +414,7 @@ class Refiner {
     T_.vertexEdge.pop_back();
     role_.pop_back();
     fanCenter_.pop_back();
+    footOf_.pop_back();
   }
   // A chord of a corner fan: a fixed edge between two points of the same fan.
   bool isChord(uint32_t e) const {
@@ -421,7 +432,12 @@ class Refiner {
   // meets a segment), else kNone; per fan centre, the fan's radius.
   std::vector<uint32_t> fanCenter_;
   std::vector<double> fanRadius_;
+  // Per vertex (Options::exactFeet): for a segment vertex made at the altitude foot of a
+  // vertex, that vertex, else kNone. Its angles between the segment and the edge to that
+  // vertex count as right when within kFootSlack of it (footCorners), for the exact foot.
+  std::vector<uint32_t> footOf_;
   bool acute_ = false, nonObtuse_ = false;
+  bool feet_ = false;  // Options::exactFeet in a non-obtuse run
   double cosMax_ = 0, cosMin_ = 1;
   double cosQuality_ = 1;  // of the angles qualityPoint() aims for (a little over minAngle)
   bool strictMax_ = false;  // acute with a bound below 90 degrees, checked in floating point
@@ -451,14 +467,53 @@ class Refiner {
 Corner Refiner::worstCorner(uint32_t t) const {
   const uint32_t* v = &T_.tri[3 * t];
   const double* p[3] = {P(v[0]), P(v[1]), P(v[2])};
-  return worstCorner(p);
+  return worstCorner(p, feet_ ? footCorners(t) : 0);
+}
+
+// Options::exactFeet: how far from 90 degrees (as a cosine) an angle at a segment vertex
+// between the segment and an edge may be and still count as right, the vertex standing for
+// the exact foot of the altitude from that edge's other end. The point of a tilted segment
+// nearest the foot that a double holds can be hundreds of ulps away (on a line of direction
+// (553, 2) they are 553 ulps apart), which for a vertex 0.4 units off a segment 2765 long
+// misses 90 degrees by about 1e-9: CG:SHOP non-obtuse needs half the points with 1e-9 or
+// more, no gain at 1e-12. exactFeet() then checks every triangle at the exact foot.
+constexpr double kFootSlack = 1e-7;
+// footCorners' flag for a triangle at a foot: its other corners must be sharper than 90
+// degrees by kFootSlack (as cosines), for the foot's move to its exact place.
+constexpr int kNearFoot = 8;
+
+// Bit k set: corner k of t is at a segment vertex standing for the altitude foot of a vertex
+// (footOf_), between a piece of its segment and the edge to that vertex. kNearFoot set: some
+// vertex of t stands for a foot.
+int Refiner::footCorners(uint32_t t) const {
+  int mask = 0;
+  const uint32_t* v = &T_.tri[3 * t];
+  for (uint32_t k = 0; k < 3; ++k) {
+    const uint32_t foot = footOf_[v[k]];
+    if (foot == kNone) continue;
+    mask |= kNearFoot;
+    if ((footEdge(3 * t + k) && v[(k + 2) % 3] == foot) ||
+        (footEdge(3 * t + (k + 2) % 3) && v[(k + 1) % 3] == foot))
+      mask |= 1 << k;
+  }
+  return mask;
 }
 
 // The same for the triangle p[0], p[1], p[2] (counter-clockwise).
-Corner Refiner::worstCorner(const double* const p[3]) const {
+Corner Refiner::worstCorner(const double* const p[3], int footCorners) const {
   if (acute_ || nonObtuse_) {
     for (int k = 0; k < 3; ++k) {
-      double d = dot2d(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+      const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+      double d = dot2d(a, b, c);
+      if (footCorners & kNearFoot) {
+        const double slack = kFootSlack * std::sqrt(dist2(a, b) * dist2(a, c));
+        if (footCorners >> k & 1) {
+          if (d < -slack) return {k, true};
+        } else if (d < slack) {
+          return {k, true};
+        }
+        continue;
+      }
       if (nonObtuse_ ? d < 0 : d <= 0) return {k, true};
     }
     if (acute_ && strictMax_) {
@@ -495,7 +550,7 @@ double Refiner::shellRatio(uint32_t e) const {
 
 // Splits the subsegment of fixed half-edge e, at shellRatio() unless `preferred` is given and
 // well inside (splitRatio).
-bool Refiner::splitSubsegment(uint32_t e, double preferred) {
+bool Refiner::splitSubsegment(uint32_t e, double preferred, uint32_t footOf) {
   if (isChord(e)) return splitChord(e);
   uint32_t a = T_.tri[e], b = T_.tri[next(e)];
   // Copies: adding a vertex may move the coordinate array.
@@ -512,7 +567,10 @@ bool Refiner::splitSubsegment(uint32_t e, double preferred) {
     line.at(ta + ratio * (tb - ta), m);
     if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
     uint32_t v = addVertex(m, seg != kNone ? kOnSegment : kOnHull);
-    if (T_.splitFixedEdge(e, v)) return true;
+    if (T_.splitFixedEdge(e, v)) {
+      if (ratio == preferred && feet_) footOf_[v] = footOf;
+      return true;
+    }
     dropLastVertex();
   }
   return false;
@@ -1267,7 +1325,7 @@ bool Refiner::repair(uint32_t t, Corner c) {
     // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
     uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
     if (strategy_.weighPoints && T_.isFixed(opposite) && !isChord(opposite))
-      return splitWeighed(opposite, P(T_.tri[3 * t + c.k]));
+      return splitWeighed(opposite, T_.tri[3 * t + c.k]);
     if (nonObtuse_ && strategy_.footOnSegments && T_.isFixed(opposite)) return splitAtFoot(t, c.k);
     if (T_.isFixed(opposite)) return splitSubsegment(opposite);
     // The farthest point of the slice; but one that encroaches a subsegment would split it,
@@ -1334,7 +1392,7 @@ size_t Refiner::weighCandidates(uint32_t t, const std::vector<std::array<double,
 // point that encroaches no subsegment; splitBadChange's for a split of the subsegment of
 // fixed half-edge `split`, whose two sides then give way to x): the cavity's triangles give
 // way to those joining x to its rim.
-int Refiner::badChange(const double* x, uint32_t split) const {
+int Refiner::badChange(const double* x, uint32_t split, uint32_t footOf) const {
   int change = 0;
   for (uint32_t t : cavity_) {
     change -= worstCorner(t).k >= 0;
@@ -1345,7 +1403,14 @@ int Refiner::badChange(const double* x, uint32_t split) const {
                  std::find(cavity_.begin(), cavity_.end(), n) == cavity_.end();
       if (!rim) continue;
       const double* p[3] = {x, P(T_.tri[e]), P(T_.tri[next(e)])};
-      change += worstCorner(p).k >= 0;
+      // A split point at footOf's foot: its corner between a piece of the subsegment and
+      // the edge to footOf counts as right (footCorners).
+      int foot = 0;
+      if (feet_ && footOf != kNone)
+        for (uint32_t end : {T_.tri[split], T_.tri[next(split)]})
+          foot |= kNearFoot | int((T_.tri[e] == end && T_.tri[next(e)] == footOf) ||
+                                  (T_.tri[next(e)] == end && T_.tri[e] == footOf));
+      change += worstCorner(p, foot).k >= 0;
     }
   }
   return change;
@@ -1364,19 +1429,19 @@ bool Refiner::splitAtFoot(uint32_t t, int k) {
   const double *pc = P(T_.tri[3 * t + k]), *pa = P(T_.tri[opposite]), *pb = P(T_.tri[next(opposite)]);
   double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
   double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
-  return splitSubsegment(opposite, s);
+  return splitSubsegment(opposite, s, T_.tri[3 * t + k]);
 }
 
 // How many more triangles miss the target once m splits the subsegment of fixed half-edge e:
 // the cavities on both sides (into cavity_) give way to triangles joining m to their rims.
-int Refiner::splitBadChange(uint32_t e, const double* m) {
+int Refiner::splitBadChange(uint32_t e, const double* m, uint32_t footOf) {
   cavity_.clear();
   for (uint32_t side : {e, T_.opp[e]}) {
     uint32_t t = side / 3;
     if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t)) cavity_.push_back(t);
   }
   growCavity(m);
-  return badChange(m, e);
+  return badChange(m, e, footOf);
 }
 
 // The boundary rule with the split point weighed (where slice points are weighed too,
@@ -1386,8 +1451,8 @@ int Refiner::splitBadChange(uint32_t e, const double* m) {
 // ties to the earlier). CG:SHOP non-obtuse 32,945 -> 30,664 Steiner points, acute 58,109 ->
 // 47,382 (usual, middle, foot and thirds only: 31,263 and 48,805). Splits for a point that
 // encroaches a subsegment stay as they were (weighed: 34,037 and 52,832).
-bool Refiner::splitWeighed(uint32_t e, const double* apex) {
-  const double *pa = P(T_.tri[e]), *pb = P(T_.tri[next(e)]), *pc = apex;
+bool Refiner::splitWeighed(uint32_t e, uint32_t apex) {
+  const double *pa = P(T_.tri[e]), *pb = P(T_.tri[next(e)]), *pc = P(apex);
   double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
   double foot = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
   double usual = nonObtuse_ && strategy_.footOnSegments ? foot : -1;
@@ -1401,10 +1466,10 @@ bool Refiner::splitWeighed(uint32_t e, const double* apex) {
     if (i > 0 && (r == usual || !(r > 0.05 && r < 0.95))) continue;
     double m[2];
     line.at(ta + splitRatio(e, r) * (tb - ta), m);  // where splitSubsegment(e, r) splits
-    int change = splitBadChange(e, m);
+    int change = splitBadChange(e, m, r == foot ? apex : kNone);
     if (change < fewest) fewest = change, best = r;
   }
-  return splitSubsegment(e, best);
+  return splitSubsegment(e, best, best == foot ? apex : kNone);
 }
 
 // Non-obtuse: a triangle obtuse opposite a subsegment is cut at the foot of its altitude into
@@ -1475,6 +1540,7 @@ void Refiner::polish() {
       T_ = std::move(saved);
       role_ = std::move(savedRoles);
       fanCenter_.resize(role_.size(), kNone);
+      footOf_.resize(role_.size(), kNone);
       return;
     }
     if (double(before - after) < kPolishGain * double(before)) return;
@@ -1844,6 +1910,102 @@ void Refiner::mergeSteinerPoints() {
   }
 }
 
+// The ends of the input segment through segment vertex f, whose fixed edge `spoke` leaves f;
+// on a point set's hull (no input segment) the input vertices the hull edge runs between,
+// found by following the fixed edges from f both ways.
+void Refiner::segmentEnds(uint32_t f, uint32_t spoke, const double*& a, const double*& b) const {
+  const uint32_t seg = T_.segment.empty() ? kNone : T_.segment[spoke];
+  if (seg != kNone) {
+    a = &input_.points[2 * size_t(input_.segments[2 * size_t(seg)])];
+    b = &input_.points[2 * size_t(input_.segments[2 * size_t(seg) + 1])];
+    return;
+  }
+  // The next vertex along the fixed edges from `from`, coming from `before`.
+  auto along = [&](uint32_t from, uint32_t before) {
+    uint32_t e0 = T_.vertexEdge[from], e = e0;
+    do {
+      uint32_t to = T_.tri[next(e)];
+      if (T_.isFixed(e) && to != kGhost && to != before) return to;
+      e = T_.opp[prev(e)];
+    } while (e != e0);
+    return kNone;
+  };
+  const double* ends[2] = {nullptr, nullptr};
+  uint32_t first = T_.tri[next(spoke)];
+  for (int side = 0; side < 2; ++side) {
+    uint32_t before = f, at = side == 0 ? first : along(f, first);
+    for (uint32_t steps = 0; at != kNone && role_[at] != kInput && steps < T_.vertexCount(); ++steps) {
+      uint32_t after = along(at, before);
+      before = at, at = after;
+    }
+    ends[side] = at == kNone || role_[at] != kInput ? P(f) : P(at);
+  }
+  a = ends[0], b = ends[1];
+}
+
+// Every triangle of T's domain around the vertices in `exact` is counter-clockwise and has
+// no obtuse corner with those at their exact positions.
+bool feetKeepTarget(const Triangulation& T, const std::vector<ExactVertex>& exact) {
+  std::vector<const RationalPoint*> at(T.vertexCount(), nullptr);
+  for (const ExactVertex& x : exact) at[x.vertex] = &x.at;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
+    if (T.isFree(t) || T.isGhost(t) || !T.inside[t]) continue;
+    const uint32_t* v = &T.tri[3 * t];
+    if (!at[v[0]] && !at[v[1]] && !at[v[2]]) continue;
+    RationalPoint p[3];
+    for (int k = 0; k < 3; ++k) p[k] = at[v[k]] ? *at[v[k]] : exactPoint(T.point(v[k]));
+    if (orientSign(p[0], p[1], p[2]) <= 0) return false;
+    for (int k = 0; k < 3; ++k)
+      if (dotSign(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) < 0) return false;
+  }
+  return true;
+}
+
+// Options::exactFeet, once refinement is over: each foot vertex (footOf_) with a corner that
+// counts as right (footCorners: within kFootSlack of it, either way) goes to the exact foot
+// of the altitude (into `exact`). True if every triangle around them is then right or
+// sharper.
+bool Refiner::exactFeet(std::vector<ExactVertex>& exact) const {
+  exact.clear();
+  if (!feet_) return true;
+  std::vector<uint32_t> spokeOf(T_.vertexCount(), kNone);  // a piece of its segment
+  for (uint32_t t = 0; t < T_.triangleSlots(); ++t) {
+    if (T_.isFree(t) || T_.isGhost(t) || !T_.inside[t]) continue;
+    const int mask = footCorners(t);
+    const uint32_t* v = &T_.tri[3 * t];
+    for (uint32_t k = 0; k < 3; ++k) {
+      const double *a = P(v[k]), *b = P(v[(k + 1) % 3]), *c = P(v[(k + 2) % 3]);
+      if ((mask >> k & 1) && std::fabs(dot2d(a, b, c)) <= kFootSlack * std::sqrt(dist2(a, b) * dist2(a, c)))
+        spokeOf[v[k]] = footEdge(3 * t + k) ? 3 * t + k : 3 * t + (k + 2) % 3;
+    }
+  }
+  // A foot's vertex may be a foot itself: its exact place first (around a cycle, the place
+  // it has).
+  std::vector<uint8_t> state(T_.vertexCount(), 0);  // 1: being placed, 2: placed
+  std::vector<RationalPoint> at(T_.vertexCount());
+  std::vector<uint32_t> stack;
+  for (uint32_t f = 0; f < T_.vertexCount(); ++f) {
+    if (spokeOf[f] == kNone || state[f]) continue;
+    stack.assign(1, f);
+    while (!stack.empty()) {
+      const uint32_t g = stack.back(), partner = footOf_[g];
+      if (state[g] == 0 && spokeOf[partner] != kNone && state[partner] == 0) {
+        state[g] = 1;
+        stack.push_back(partner);
+        continue;
+      }
+      const double *a, *b;
+      segmentEnds(g, spokeOf[g], a, b);
+      at[g] = exactFoot(state[partner] == 2 ? at[partner] : exactPoint(P(partner)), a, b);
+      state[g] = 2;
+      stack.pop_back();
+    }
+  }
+  for (uint32_t f = 0; f < T_.vertexCount(); ++f)
+    if (spokeOf[f] != kNone) exact.push_back({f, at[f]});
+  return feetKeepTarget(T_, exact);
+}
+
 // One strategy's run on its own copy of the triangulation.
 struct StrategyRun {
   StrategyRun() = default;
@@ -1907,10 +2069,14 @@ class ConcurrentStrategies {
     slots_[0].cap = choice.cap();
   }
 
+  // The calling thread takes the first run before any helper starts: it reports progress, and
+  // a cancel on its word ("improve") then finds the first run past its refinement, as one
+  // after another would.
   void run(size_t threads) {
+    const size_t first = claim(true);
     std::vector<std::thread> helpers;
-    for (size_t i = 1; i < threads; ++i) helpers.emplace_back([this] { work(false); });
-    work(true);
+    for (size_t i = 1; i < threads; ++i) helpers.emplace_back([this] { work(false, claim(false)); });
+    work(true, first);
     for (std::thread& helper : helpers) helper.join();
   }
 
@@ -1923,24 +2089,26 @@ class ConcurrentStrategies {
     uint32_t cap = 0;  // the cap it would have had (from when it is slot handed_)
   };
 
-  void work(bool caller) {
-    for (;;) {
-      size_t i;
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (next_ >= end_) return;
-        i = next_++;
-        Slot& slot = slots_[i];
-        const uint32_t cap = i == handed_ ? slot.cap : choice_.steinerCap;
-        slot.run = StrategyRun(T_, input_, options_, budget_, strategies_[i], cap);
-        slot.gate.limit = slot.run.refiner->steinerLimitWith(cap);
-        slot.run.refiner->useGate(&slot.gate);
-        slot.run.refiner->reportProgress(caller);
-      }
-      Slot& slot = slots_[i];
-      slot.run.go();
+  // Sets up the next run for this thread: its slot, or kNoRun if none is left.
+  static constexpr size_t kNoRun = SIZE_MAX;
+  size_t claim(bool caller) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (next_ >= end_) return kNoRun;
+    const size_t i = next_++;
+    Slot& slot = slots_[i];
+    const uint32_t cap = i == handed_ ? slot.cap : choice_.steinerCap;
+    slot.run = StrategyRun(T_, input_, options_, budget_, strategies_[i], cap);
+    slot.gate.limit = slot.run.refiner->steinerLimitWith(cap);
+    slot.run.refiner->useGate(&slot.gate);
+    slot.run.refiner->reportProgress(caller);
+    return i;
+  }
+
+  void work(bool caller, size_t i) {
+    for (; i != kNoRun; i = claim(caller)) {
+      slots_[i].run.go();
       std::lock_guard<std::mutex> lock(mutex_);
-      slot.finished = true;
+      slots_[i].finished = true;
       handOver();
     }
   }
@@ -1987,9 +2155,12 @@ class ConcurrentStrategies {
 // The strategies of refine() in turn, then polish() on the one that met the target with the
 // fewest Steiner points; true if one met the target. steinerCap (0: none) bounds each run's
 // Steiner points.
+// With exactFeet (see Refiner::exactFeet) the exact feet go into `exact`, and feetHeld says
+// whether every triangle around them is right or sharper there.
 bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& options,
                           const Budget& budget, uint32_t steinerCap,
-                          std::vector<uint8_t>& freeVertex, StepResult& bestResult) {
+                          std::vector<uint8_t>& freeVertex, StepResult& bestResult,
+                          std::vector<ExactVertex>& exact, bool& feetHeld) {
   std::vector<Strategy> strategies = {Strategy{}};
   if (options.mode == Mode::NonObtuse) {
     // Each with exact slides, then with sampled ones: CG:SHOP 49,678 -> 40,851 Steiner points
@@ -2051,6 +2222,7 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
     best.result = {Status::Cancelled, "cancelled while removing Steiner points; the mesh meets "
                                       "the target"};
   best.refiner->markFree(freeVertex);
+  feetHeld = best.refiner->exactFeet(exact);
   bestResult = best.result;
   T = std::move(*best.T);
   return best.met;
@@ -2067,22 +2239,41 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
 // A bound below 90 degrees is best effort: if no strategy reaches it with half the Steiner
 // budget, the input is meshed acute from the start again, so a run that falls short still ends
 // acute and certified (exit 1) rather than half refined.
+//
+// Exact feet (non-obtuse, Options::exactFeet): should some triangle around them not be right
+// at their exact positions after all (or a vertex stand for two feet), the run is made again
+// without them; not when a budget stopped it (the certificate counts what is left).
 StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
-                  const Budget& budget, std::vector<uint8_t>& freeVertex) {
+                  const Budget& budget, std::vector<uint8_t>& freeVertex,
+                  std::vector<ExactVertex>& exact) {
   StepResult result;
+  bool feetHeld = true;
+  exact.clear();
+  if (options.exactFeet && options.mode == Mode::NonObtuse) {
+    const Triangulation start = T;
+    bool met = refineWithStrategies(T, input, options, budget, 0, freeVertex, result, exact, feetHeld);
+    if (feetHeld || !met || !result.ok() || budget.stop()) return result;
+    Options plain = options;
+    plain.exactFeet = false;
+    T = start;
+    refineWithStrategies(T, input, plain, budget, 0, freeVertex, result, exact, feetHeld);
+    return result;
+  }
   if (options.mode != Mode::Acute || !(options.maxAngle < 90)) {
-    refineWithStrategies(T, input, options, budget, 0, freeVertex, result);
+    refineWithStrategies(T, input, options, budget, 0, freeVertex, result, exact, feetHeld);
     return result;
   }
   const Triangulation start = T;
   uint32_t half = std::max<uint32_t>(1, (options.maxSteiner ? options.maxSteiner
                                                             : uint32_t(std::max(20000.0, 50.0 * input.vertexCount()))) / 2);
-  if (refineWithStrategies(T, input, options, budget, half, freeVertex, result)) return result;
+  if (refineWithStrategies(T, input, options, budget, half, freeVertex, result, exact, feetHeld))
+    return result;
   if (result.status == Status::Cancelled) return result;
   Options acute = options;
   acute.maxAngle = 90;
   T = start;
-  if (!refineWithStrategies(T, input, acute, budget, 0, freeVertex, result)) return result;
+  if (!refineWithStrategies(T, input, acute, budget, 0, freeVertex, result, exact, feetHeld))
+    return result;
   return {Status::TargetNotMet, "the bound of " + std::to_string(options.maxAngle) +
                                     " degrees was not reached; the mesh is acute"};
 }

@@ -208,6 +208,36 @@ check "cgshop on .poly message" stderr_has "--format cgshop needs a CG:SHOP 2025
 check "cgshop on .poly writes nothing" test ! -e "$work/A.1.solution.json"
 check "cgshop on JSON rings" run 2 --format cgshop -o "$work/r" "$work/rings.json"
 check "cgshop on JSON rings writes nothing" test ! -e "$work/r.solution.json"
+
+# --- Exact altitude feet (nonobtuse, CG:SHOP input): rationals in the solution ---------------
+# A point set whose tilted hull edges have input vertices within a unit of them.
+ps="$shared/cgshop2025/point-set_250_3c338713.instance.json"
+check "exact feet" run 0 --mode nonobtuse --stats --format cgshop,ele,json -o "$work/feet" "$ps"
+check "exact feet: counted in --stats" grep -qE '"exactPoints": [1-9][0-9]*,' "$work/out"
+check "exact feet: certified" grep -qF '"certified": true' "$work/out"
+check "exact feet: solution verified with BigInt rationals" \
+  node "$here/verify_cgshop.mjs" "$ps" "$work/feet.solution.json" "$work/feet.ele"
+check "exact feet: in the JSON mesh" grep -qF '"exactPoints": [' "$work/feet.json"
+check "exact feet: JSON mesh reads back" run 0 --no-output "$work/feet.json"
+check "exact feet: JSON mesh reads back quietly" test ! -s "$work/err"
+# One foot's numerator off by one: the verifier must see it.
+node -e "
+  const fs = require('fs');
+  const s = JSON.parse(fs.readFileSync('$work/feet.solution.json', 'utf8'));
+  const k = s.steiner_points_x.findIndex(x => typeof x === 'string' && /^\d+\/\d+$/.test(x) && !/^\d+\/(\d*[02468])$/.test(x));
+  const [p, q] = s.steiner_points_x[k].split('/');
+  s.steiner_points_x[k] = (BigInt(p) + 1n) + '/' + q;
+  fs.writeFileSync('$work/feet.off.solution.json', JSON.stringify(s));"
+check "verifier rejects a foot off by one" \
+  bash -c "! node '$here/verify_cgshop.mjs' '$ps' '$work/feet.off.solution.json' '$work/feet.ele' 2>/dev/null"
+check "exact feet off" run 0 --mode nonobtuse --stats --no-exact-feet --format cgshop,ele -o "$work/nofeet" "$ps"
+check "exact feet off: none" grep -qF '"exactPoints": 0,' "$work/out"
+check "exact feet off: verified too" \
+  node "$here/verify_cgshop.mjs" "$ps" "$work/nofeet.solution.json" "$work/nofeet.ele"
+check "exact feet: fewer points" node -e "
+  const fs = require('fs');
+  const count = f => JSON.parse(fs.readFileSync(f, 'utf8')).steiner_points_x.length;
+  process.exit(count('$work/feet.solution.json') * 2 < count('$work/nofeet.solution.json') ? 0 : 1);"
 check "help lists cgshop" run 0 --help
 check "help text cgshop" stdout_has "cgshop: BASE.solution.json"
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "acutemesh/io.h"
+#include "exact.h"
 
 namespace fs = std::filesystem;
 using namespace acutemesh;
@@ -424,7 +425,16 @@ size_t checkSolution(const std::string& text, const Mesh& m, size_t n0, const st
   }
   EXPECT_EQ(xs->items.size(), steiner.size());
   EXPECT_EQ(ys->items.size(), steiner.size());
+  std::vector<const ExactPoint*> exact(n, nullptr);
+  for (const ExactPoint& p : m.exactPoints) exact[p.vertex] = &p;
   for (size_t k = 0; k < steiner.size() && k < xs->items.size() && k < ys->items.size(); ++k) {
+    if (const ExactPoint* p = exact[steiner[k]]) {  // its rational: a number if an integer
+      const bool integer = p->x.find('/') == std::string::npos;
+      EXPECT_EQ(xs->items[k].kind, integer ? Json::Number : Json::String);
+      EXPECT_EQ(xs->items[k].text, p->x);
+      EXPECT_EQ(ys->items[k].text, p->y);
+      continue;
+    }
     EXPECT_TRUE(exactly(xs->items[k], m.points[2 * steiner[k]]));
     EXPECT_TRUE(exactly(ys->items[k], m.points[2 * steiner[k] + 1]));
   }
@@ -479,6 +489,102 @@ TEST(CgshopSolution, EverySharedInstanceMeshedAndReadBack) {
   }
   RecordProperty("instances", static_cast<int>(files.size()));
   RecordProperty("steiner", static_cast<int>(steinerTotal));
+}
+
+// "p/q" or "p" back into a rational point's coordinate over w = q (for the check below).
+acutemesh::detail::RationalPoint parseExact(const ExactPoint& p) {
+  using acutemesh::detail::BigInt;
+  auto parse = [](const std::string& s, BigInt& num, BigInt& den) {
+    num = BigInt(0), den = BigInt(1);
+    BigInt* at = &num;
+    for (char c : s) {
+      if (c == '/') at = &(den = BigInt(0));
+      else if (c != '-') *at = *at * BigInt(10) + BigInt(c - '0');
+    }
+    if (s[0] == '-') num = -num;
+  };
+  BigInt xn, xd, yn, yd;
+  parse(p.x, xn, xd);
+  parse(p.y, yn, yd);
+  return {xn * yd, yn * xd, xd * yd};
+}
+
+// Exact altitude feet (Options::exactFeet) on instances whose boundaries are tilted, where
+// input vertices stand close to them: certified with the exact places, each on its segment
+// line and within rounding of its double, the solution written with them, and fewer Steiner
+// points than without (the double nearest a foot is not one). tests/cli/verify_cgshop.mjs
+// checks such solutions on their own (rational arithmetic in JavaScript).
+TEST(CgshopSolution, ExactFeetOnTiltedBoundaries) {
+  namespace detail = acutemesh::detail;
+  const fs::path dir = ACUTEMESH_SHARED_DATA "/cgshop2025";
+  if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " is missing";
+  size_t withFeet = 0, without = 0, exactPoints = 0;
+  for (const char* name : {"point-set_250_3c338713", "simple-polygon-exterior_80_d87f15e8",
+                           "simple-polygon-exterior-20_100_7ed1ca87", "simple-polygon_100_cb23308c",
+                           "ortho_40_56a6f463"}) {
+    SCOPED_TRACE(name);
+    Input in;
+    const fs::path path = dir / (std::string(name) + ".instance.json");
+    ASSERT_TRUE(fs::exists(path)) << path;
+    ASSERT_TRUE(readInputFile(path.string(), in).ok);
+    Options o;
+    o.mode = Mode::NonObtuse;
+    o.exactSegments = true;
+    const Result plain = mesh(in.pslg, o);
+    o.exactFeet = true;
+    const Result r = mesh(in.pslg, o);
+    ASSERT_EQ(r.status, Status::Ok) << r.message;
+    ASSERT_EQ(plain.status, Status::Ok) << plain.message;
+    EXPECT_TRUE(r.stats.certified);
+    EXPECT_EQ(r.stats.obtuse, 0u);
+    EXPECT_TRUE(validate(in.pslg, r.mesh, o).ok);
+    withFeet += r.stats.steiner, without += plain.stats.steiner;
+    exactPoints += r.mesh.exactPoints.size();
+    EXPECT_TRUE(plain.mesh.exactPoints.empty());
+
+    // Each exact point: on the line of a segment edge at it, near its double; every triangle
+    // at it counter-clockwise and non-obtuse there, exactly.
+    const Mesh& m = r.mesh;
+    std::vector<detail::RationalPoint> at(m.vertexCount());
+    std::vector<char> isExact(m.vertexCount(), 0);
+    for (size_t v = 0; v < m.vertexCount(); ++v) at[v] = detail::exactPoint(&m.points[2 * v]);
+    for (const ExactPoint& p : m.exactPoints) {
+      ASSERT_LT(p.vertex, m.vertexCount());
+      at[p.vertex] = parseExact(p);
+      isExact[p.vertex] = 1;
+      const double x = at[p.vertex].x.toDouble() / at[p.vertex].w.toDouble();
+      const double y = at[p.vertex].y.toDouble() / at[p.vertex].w.toDouble();
+      EXPECT_NEAR(x, m.points[2 * p.vertex], 1e-6 * (1 + std::fabs(x)));
+      EXPECT_NEAR(y, m.points[2 * p.vertex + 1], 1e-6 * (1 + std::fabs(y)));
+      int onLine = 0;
+      for (size_t i = 0; i + 1 < m.segments.size(); i += 2) {
+        const uint32_t a = m.segments[i], b = m.segments[i + 1];
+        if (a != p.vertex && b != p.vertex) continue;
+        const uint32_t other = a == p.vertex ? b : a;
+        // The segment's line: through the other end and the double's position (both on it).
+        onLine += detail::orientSign(detail::exactPoint(&m.points[2 * other]),
+                                     detail::exactPoint(&m.points[2 * p.vertex]), at[p.vertex]) == 0;
+      }
+      EXPECT_GE(onLine, 1) << "exact point " << p.vertex << " off its segment's line";
+    }
+    size_t checked = 0;
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+      const uint32_t* v = &m.triangles[3 * t];
+      if (!isExact[v[0]] && !isExact[v[1]] && !isExact[v[2]]) continue;
+      ++checked;
+      EXPECT_GT(detail::orientSign(at[v[0]], at[v[1]], at[v[2]]), 0) << "triangle " << t;
+      for (int k = 0; k < 3; ++k)
+        EXPECT_GE(detail::dotSign(at[v[k]], at[v[(k + 1) % 3]], at[v[(k + 2) % 3]]), 0) << "triangle " << t;
+    }
+    EXPECT_EQ(checked == 0, m.exactPoints.empty());
+    const size_t n0 = in.pslg.vertexCount();
+    checkSolution(formatCgshopSolution(m, in.instanceUid, n0), m, n0, in.instanceUid, name);
+  }
+  EXPECT_GT(exactPoints, 50u);
+  EXPECT_LT(withFeet * 10, without * 7) << withFeet << " Steiner points with exact feet, " << without
+                                        << " without";
+  RecordProperty("steiner_exact_feet", static_cast<int>(withFeet));
+  RecordProperty("steiner_without", static_cast<int>(without));
 }
 
 // Crossing constraints make rounded crossing points: fractional Steiner coordinates.

@@ -75,6 +75,14 @@ struct Options {
   // checker such as the CG:SHOP 2025 verifier needs. Otherwise they are rounded (a few ulps
   // off the line, which leaves refinement some slack: CG:SHOP non-obtuse about 15% fewer points).
   bool exactSegments = false;
+  // Non-obtuse: a Steiner point on a segment may stand for the exact foot of the altitude from
+  // a vertex next to it, a rational a double cannot hold where the segment is tilted. Such
+  // points are listed in Mesh::exactPoints with their exact coordinates (Mesh::points has a
+  // double within rounding of them, on the same segment line), and the certificate is taken
+  // there. For outputs that hold rationals (CG:SHOP 2025 solutions): with exactSegments,
+  // CG:SHOP non-obtuse needs about half the Steiner points. Ignored for inputs that have to be
+  // scaled to be meshed exactly (coordinates beyond 2^+-64).
+  bool exactFeet = false;
   // Threads for acute and non-obtuse refinement, which tries a few strategies at once where it
   // can (0: one per hardware thread; 1: the calling thread alone). The mesh is the same either
   // way, and in every build (WebAssembly runs them one after another).
@@ -85,11 +93,19 @@ struct Options {
   std::function<void(const Progress&)> progress;
 };
 
+// A vertex whose exact position a double cannot hold (Options::exactFeet): coordinates as
+// decimal rationals "p/q" in lowest terms (q > 0), or "p" for integers.
+struct ExactPoint {
+  uint32_t vertex;
+  std::string x, y;
+};
+
 struct Mesh {
   std::vector<double> points;       // x, y per vertex; input vertices first, at their indices
   std::vector<uint32_t> triangles;  // a, b, c per triangle, counter-clockwise
   std::vector<uint32_t> segments;   // a, b per mesh edge lying on an input segment
   std::vector<uint8_t> vertexKind;  // per vertex: see VertexKind
+  std::vector<ExactPoint> exactPoints;  // by vertex; empty unless Options::exactFeet
 
   size_t vertexCount() const { return points.size() / 2; }
   size_t triangleCount() const { return triangles.size() / 3; }

@@ -70,7 +70,10 @@ ParseResult readInputFile(const std::string& path, Input& out);
 std::string formatNode(const Mesh& m);
 std::string formatEle(const Mesh& m);
 std::string formatPoly(const Mesh& m);  // mesh vertices plus its segment edges
-std::string formatJson(const Mesh& m);  // {"vertices": [[x,y]...], "triangles": [[a,b,c]...], "segments": [...]}
+// {"vertices": [[x,y]...], "triangles": [[a,b,c]...], "segments": [...]}, and when the mesh
+// has exact points (Options::exactFeet) "exactPoints": [[vertex, "x", "y"]...] (decimal
+// rationals "p/q" or integers "p": the exact place of those vertices).
+std::string formatJson(const Mesh& m);
 std::string formatOff(const Mesh& m);
 std::string formatObj(const Mesh& m);
 std::string formatSvg(const Mesh& m);
@@ -82,7 +85,8 @@ std::string formatSvg(const Mesh& m);
 // index instanceVertexCount on that a triangle uses, in index order; the k-th is numbered
 // instanceVertexCount + k in "edges", instance vertices keep their index. Each coordinate is
 // exact: a JSON integer when the double is one (any size; -0 is 0), else the string "p/q" in
-// lowest terms (q a power of two). "edges" holds every undirected edge of every triangle once,
+// lowest terms (q a power of two); a vertex in m.exactPoints as its exact rational (a JSON
+// integer, or "p/q" in lowest terms). "edges" holds every undirected edge of every triangle once,
 // as [smaller, larger] sorted. The verifier adds the region boundary and constraints itself
 // and rejects isolated points, so an unused instance vertex (a duplicate, or one outside the
 // region) makes the solution invalid; this writes it anyway.
