@@ -86,6 +86,11 @@ Mesh meshFromJs(const val& m) {
   mesh.triangles = fromJs<uint32_t>(m["triangles"]);
   mesh.segments = fromJs<uint32_t>(m["segments"]);
   mesh.vertexKind = fromJs<uint8_t>(m["vertexKind"]);
+  const val exact = m["exactPoints"];  // checked by the facade: [{vertex, x, y}]
+  const unsigned count = exact.isUndefined() ? 0 : exact["length"].as<unsigned>();
+  for (unsigned i = 0; i < count; ++i)
+    mesh.exactPoints.push_back({exact[i]["vertex"].as<uint32_t>(), exact[i]["x"].as<std::string>(),
+                                exact[i]["y"].as<std::string>()});
   return mesh;
 }
 
@@ -96,6 +101,7 @@ Options optionsFromJs(const val& o) {
   opt.fill = FillRule(o["fill"].as<int>());
   opt.convexHull = o["convexHull"].as<bool>();
   opt.exactSegments = o["exactSegments"].as<bool>();
+  opt.exactFeet = o["exactFeet"].as<bool>();
   opt.maxAngle = o["maxAngle"].as<double>();
   opt.minAngle = o["minAngle"].as<double>();
   opt.maxArea = o["maxArea"].as<double>();
@@ -152,6 +158,15 @@ val meshJs(const val& points, const val& segments, const val& holes, const val& 
   out.set("triangles", toJs(r.mesh.triangles));
   out.set("segments", toJs(r.mesh.segments));
   out.set("vertexKind", toJs(r.mesh.vertexKind));
+  val exact = val::array();
+  for (const ExactPoint& p : r.mesh.exactPoints) {
+    val e = val::object();
+    e.set("vertex", p.vertex);
+    e.set("x", p.x);
+    e.set("y", p.y);
+    exact.call<void>("push", e);
+  }
+  out.set("exactPoints", exact);
   out.set("stats", statsToJs(r.stats));
   return out;
 }

@@ -127,6 +127,61 @@ test('a few CG:SHOP 2025 instances: parsed, constrained, non-obtuse or honestly 
   }
 });
 
+test('exact feet: rationals in the mesh and the CG:SHOP solution, non-obtuse exactly', async () => {
+  const { join } = await import('node:path');
+  const { sharedData } = await import('./helpers.mjs');
+  // Tilted hull edges with input vertices within a unit of them.
+  const inst = load(am, join(sharedData, 'cgshop2025', 'point-set_250_3c338713.instance.json'));
+  const plain = am.mesh(inst, { mode: 'nonobtuse', exactSegments: true });
+  const m = am.mesh(inst, { mode: 'nonobtuse', exactSegments: true, exactFeet: true });
+  checkShape(inst, m);
+  checkValid(inst, m);
+  assert.equal(m.options.exactFeet, true);
+  assert.deepEqual(plain.exactPoints, []);
+  assert.ok(m.exactPoints.length > 10, `${m.exactPoints.length} exact points`);
+  assert.ok(m.stats.certified && m.stats.obtuse === 0);
+  assert.ok(2 * m.stats.steiner < plain.stats.steiner, `${m.stats.steiner} vs ${plain.stats.steiner}`);
+  // Exactly, with BigInt: every triangle counter-clockwise and non-obtuse at the exact places.
+  const pow2 = (e) => (e >= 0 ? [2n ** BigInt(e), 1n] : [1n, 2n ** BigInt(-e)]);
+  const fromDouble = (v) => {  // [numerator, denominator] of a double, exactly
+    if (v === 0) return [0n, 1n];
+    let e = Math.floor(Math.log2(Math.abs(v))) - 52, m = v / 2 ** e;
+    while (!Number.isInteger(m)) m *= 2, e -= 1;
+    const [a, b] = pow2(e);
+    return [BigInt(m) * a, b];
+  };
+  const fromText = (s) => { const [p, q] = s.split('/'); return [BigInt(p), BigInt(q ?? '1')]; };
+  const at = [];  // [X, Y, W]
+  for (let v = 0; v < m.points.length / 2; ++v) {
+    const [xp, xq] = fromDouble(m.points[2 * v]), [yp, yq] = fromDouble(m.points[2 * v + 1]);
+    at.push([xp * yq, yp * xq, xq * yq]);
+  }
+  for (const p of m.exactPoints) {
+    const [xp, xq] = fromText(p.x), [yp, yq] = fromText(p.y);
+    assert.ok(Math.abs(Number(xp) / Number(xq) - m.points[2 * p.vertex]) < 1e-6);
+    at[p.vertex] = [xp * yq, yp * xq, xq * yq];
+  }
+  const minus = (b, a) => [b[0] * a[2] - a[0] * b[2], b[1] * a[2] - a[1] * b[2]];
+  for (let t = 0; t < m.triangles.length / 3; ++t) {
+    const [a, b, c] = [...m.triangles.subarray(3 * t, 3 * t + 3)].map((v) => at[v]);
+    const ab = minus(b, a), ac = minus(c, a);
+    assert.ok(ab[0] * ac[1] - ab[1] * ac[0] > 0n, `triangle ${t} not counter-clockwise`);
+    for (const [p, q, r] of [[a, b, c], [b, c, a], [c, a, b]]) {
+      const u = minus(q, p), w = minus(r, p);
+      assert.ok(u[0] * w[0] + u[1] * w[1] >= 0n, `triangle ${t} obtuse`);
+    }
+  }
+  // The solution writes them as they are; the JSON mesh lists them.
+  const solution = JSON.parse(am.toCgshop(m, inst));
+  const n0 = inst.points.length / 2;
+  for (const p of m.exactPoints) {
+    const expect = (s) => (s.includes('/') ? s : Number(s));
+    assert.equal(solution.steiner_points_x[p.vertex - n0], expect(p.x));
+    assert.equal(solution.steiner_points_y[p.vertex - n0], expect(p.y));
+  }
+  assert.deepEqual(JSON.parse(am.toJSON(m)).exactPoints, m.exactPoints.map((p) => [p.vertex, p.x, p.y]));
+});
+
 test('parameters reach the core: maxArea, minAngle, maxAngle, convexHull, fill', () => {
   const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
   const coarse = am.mesh(square, { mode: 'quality' });

@@ -116,8 +116,25 @@ function toMesh(m, what = 'mesh') {
     triangles: toIndices(m.triangles, `${what}.triangles`, 3),
     segments: m.segments == null ? new Uint32Array(0) : toIndices(m.segments, `${what}.segments`, 2),
     vertexKind: m.vertexKind instanceof Uint8Array ? m.vertexKind : new Uint8Array(0),
+    exactPoints: toExactPoints(m.exactPoints, `${what}.exactPoints`),
   };
   return mesh;
+}
+
+// A mesh's exact points (options.exactFeet): [{ vertex, x, y }] with rationals "p/q" or "p".
+function toExactPoints(list, what) {
+  if (list == null) return [];
+  if (!Array.isArray(list)) throw new TypeError(`${what} must be an array, not ${describe(list)}`);
+  const rational = /^-?\d+(\/[1-9]\d*)?$/;
+  return list.map((p, i) => {
+    checkObject(p, `${what}[${i}]`);
+    if (!Number.isInteger(p.vertex) || p.vertex < 0 || p.vertex > 0xffffffff)
+      throw badInput(`${what}[${i}].vertex must be a vertex index, not ${describe(p.vertex)}`);
+    for (const key of ['x', 'y'])
+      if (typeof p[key] !== 'string' || !rational.test(p[key]))
+        throw badInput(`${what}[${i}].${key} must be a rational "p/q" or "p", not ${describe(p[key])}`);
+    return { vertex: p.vertex, x: p.x, y: p.y };
+  });
 }
 
 // The writers index points by the triangles and segments: check every index first, so a bad
@@ -135,6 +152,10 @@ function checkMeshIndices(mesh, what = 'mesh') {
         throw badInput(`${what}.${key}[${i}] refers to vertex ${a[i]}, but there are only ${n} vertices`);
   }
   if (mesh.vertexKind.length !== n) mesh.vertexKind = new Uint8Array(0);
+  mesh.exactPoints.forEach((p, i) => {
+    if (p.vertex >= n)
+      throw badInput(`${what}.exactPoints[${i}] refers to vertex ${p.vertex}, but there are only ${n} vertices`);
+  });
 }
 
 function enumOption(value, table, what, fallback) {
@@ -159,7 +180,7 @@ function toOptions(options, pslgFill) {
   checkObject(options, 'options');
   const mode = enumOption(options.mode, MODES, 'mode', 'cdt');
   const fill = enumOption(options.fill, FILLS, 'fill rule', pslgFill === undefined ? 'triangle' : pslgFill);
-  for (const key of ['convexHull', 'exactSegments'])
+  for (const key of ['convexHull', 'exactSegments', 'exactFeet'])
     if (options[key] !== undefined && typeof options[key] !== 'boolean')
       throw new TypeError(`options.${key} must be a boolean, not ${describe(options[key])}`);
   const maxSteiner = numberOption(options, 'maxSteiner', 0);
@@ -173,6 +194,7 @@ function toOptions(options, pslgFill) {
     fill,
     convexHull: options.convexHull === true,
     exactSegments: options.exactSegments === true,
+    exactFeet: options.exactFeet === true,
     // The core checks the ranges of these three and names the option when one is wrong.
     maxAngle: numberOption(options, 'maxAngle', 90),
     minAngle: numberOption(options, 'minAngle', 0),
@@ -403,6 +425,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
         triangles: r.triangles,
         segments: r.segments,
         vertexKind: r.vertexKind,
+        exactPoints: r.exactPoints,
         stats: r.stats,
         status: r.status === STATUS_TARGET_NOT_MET ? 'target-not-met' : 'ok',
         message: r.message,

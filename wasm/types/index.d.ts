@@ -84,6 +84,12 @@ export interface MeshOptions {
    * CG:SHOP 2025 verifier; costs points. Default false.
    */
   exactSegments?: boolean;
+  /**
+   * Non-obtuse: Steiner points on segments may stand for exact altitude feet, rationals no
+   * double holds (see MeshResult.exactPoints): far fewer points next to tilted segments. For
+   * outputs that hold rationals (toCgshop, toJSON). Default false.
+   */
+  exactFeet?: boolean;
   /** Degrees; acute mode: every angle < maxAngle (60 < maxAngle <= 90; default 90, exact). */
   maxAngle?: number;
   /** Degrees; smallest angle wanted (quality mode: default 20; 0 <= minAngle < 60, terminates up to about 40). */
@@ -110,6 +116,7 @@ export interface ResolvedOptions {
   fill: FillRule;
   convexHull: boolean;
   exactSegments: boolean;
+  exactFeet: boolean;
   maxAngle: number;
   minAngle: number;
   maxArea: number;
@@ -160,6 +167,11 @@ export interface MeshResult {
   segments: Uint32Array;
   /** Per vertex: 0 input, 1 unused input (duplicate or outside), 2 on a segment, 3 free. */
   vertexKind: Uint8Array;
+  /**
+   * With options.exactFeet: the vertices whose exact place no double holds, by vertex; points
+   * has a double on the same segment within rounding. stats.certified is about the exact mesh.
+   */
+  exactPoints: ExactPoint[];
   stats: MeshStats;
   /**
    * 'target-not-met': a budget (maxSteiner, timeLimit) ended first, or an angle bound below 90
@@ -177,7 +189,15 @@ export interface MeshInput {
   triangles: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number, number]>;
   segments?: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
   vertexKind?: Uint8Array;
+  exactPoints?: ExactPoint[];
   options?: Partial<ResolvedOptions>;
+}
+
+/** A vertex's exact place: decimal rationals "p/q" in lowest terms, or integers "p". */
+export interface ExactPoint {
+  vertex: number;
+  x: string;
+  y: string;
 }
 
 export interface Validation {
