@@ -568,7 +568,9 @@ bool Refiner::splitSubsegment(uint32_t e, double preferred, uint32_t footOf) {
     if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
     uint32_t v = addVertex(m, seg != kNone ? kOnSegment : kOnHull);
     if (T_.splitFixedEdge(e, v)) {
-      if (ratio == preferred && feet_) footOf_[v] = footOf;
+      // (A foot a double holds exactly, as on axis-parallel segments, needs no standing for.)
+      if (ratio == preferred && feet_ && footOf != kNone && dot2d(P(v), P(footOf), pa) != 0)
+        footOf_[v] = footOf;
       return true;
     }
     dropLastVertex();

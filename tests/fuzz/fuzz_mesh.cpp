@@ -3,7 +3,8 @@
 // pass validate(), its Stats must count exactly what it holds, and when the status is Ok the
 // angle certificate must hold (exact dot-product signs, recounted here).
 //
-// Layout: byte 0 = mode (bits 0-2), fill rule (bits 3-4), convex hull (bit 5); byte 1 =
+// Layout: byte 0 = mode (bits 0-2), fill rule (bits 3-4), convex hull (bit 5), area bound
+// (quality) or exact segments and feet (non-obtuse) (bit 6), minimum angle (bit 7); byte 1 =
 // coordinate scale (a power of two, so extreme scales are reached); byte 2 = vertex count;
 // then 2 bytes per vertex (a small lattice, so collinear and cocircular points, duplicates and
 // overlaps are common; a high bit adds an ulp-sized nudge); then segments as index pairs and,
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "acutemesh/predicates.h"
+#include "exact.h"
 #include "fuzz_common.h"
 
 using namespace acutemesh;
@@ -28,6 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   o.maxSteiner = 150;
   o.timeLimit = 1;
   if (o.mode == Mode::Quality && (data[0] & 64)) o.maxArea = 4;
+  if (o.mode == Mode::NonObtuse && (data[0] & 64)) o.exactSegments = o.exactFeet = true;
   // A high minimum angle (relocation and locally optimal points), also with the angle bounds.
   if (data[0] & 128) o.minAngle = o.mode == Mode::Quality ? 40 : 25;
   int exponent = int(data[1] % 64) * 32 - 1024;  // 2^-1024 .. 2^992, in steps of 2^32
@@ -70,13 +73,46 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // would underflow or overflow (mesh() scales the same way, exactly).
   Mesh m = r.mesh;
   for (double& x : m.points) x = std::ldexp(x, -exponent);
+  // Exact points (exactFeet) at their rationals, scaled the same way.
+  using acutemesh::detail::BigInt;
+  using acutemesh::detail::RationalPoint;
+  std::vector<RationalPoint> exact(m.vertexCount());
+  std::vector<char> isExact(m.vertexCount(), 0);
+  auto parse = [](const std::string& s, BigInt& num, BigInt& den) {
+    num = BigInt(0), den = BigInt(1);
+    BigInt* at = &num;
+    for (char c : s) {
+      if (c == '/') at = &(den = BigInt(0));
+      else if (c != '-') *at = *at * BigInt(10) + BigInt(c - '0');
+    }
+    if (!s.empty() && s[0] == '-') num = -num;
+  };
+  if (!r.mesh.exactPoints.empty() && !o.exactFeet) fuzz::fail("exact points without exactFeet");
+  for (const ExactPoint& p : r.mesh.exactPoints) {
+    if (p.vertex >= m.vertexCount()) fuzz::fail("exact point out of range");
+    BigInt xn, xd, yn, yd;
+    parse(p.x, xn, xd);
+    parse(p.y, yn, yd);
+    RationalPoint q{xn * yd, yn * xd, xd * yd};
+    if (q.w.sign() <= 0) fuzz::fail("exact point with a denominator <= 0");
+    if (exponent > 0) q.w = q.w.shifted(exponent);
+    else q.x = q.x.shifted(-exponent), q.y = q.y.shifted(-exponent);
+    exact[p.vertex] = q, isExact[p.vertex] = 1;
+  }
   uint32_t nonAcute = 0, obtuse = 0;
   for (size_t t = 0; t < m.triangleCount(); ++t) {
     bool right = false, blunt = false;
+    const uint32_t* v = &m.triangles[3 * t];
+    const bool atExact = isExact[v[0]] || isExact[v[1]] || isExact[v[2]];
+    RationalPoint q[3];
+    for (int k = 0; atExact && k < 3; ++k)
+      q[k] = isExact[v[k]] ? exact[v[k]] : acutemesh::detail::exactPoint(&m.points[2 * size_t(v[k])]);
+    if (atExact && acutemesh::detail::orientSign(q[0], q[1], q[2]) <= 0)
+      fuzz::fail("a triangle at an exact point is not counter-clockwise there");
     for (int k = 0; k < 3; ++k) {
-      double d = dot2d(&m.points[2 * size_t(m.triangles[3 * t + k])],
-                       &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])],
-                       &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])]);
+      int d = atExact ? acutemesh::detail::dotSign(q[k], q[(k + 1) % 3], q[(k + 2) % 3])
+                      : sign(dot2d(&m.points[2 * size_t(v[k])], &m.points[2 * size_t(v[(k + 1) % 3])],
+                                   &m.points[2 * size_t(v[(k + 2) % 3])]));
       right |= d <= 0;
       blunt |= d < 0;
     }
