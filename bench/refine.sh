@@ -170,6 +170,22 @@ if [[ "$QUICK" != 1 && -d "$SHARED/cgshop2025" ]]; then
         --mode "$mode" "${limit[@]}" --stats --no-output "$f"
     done
   done
+  # The non-obtuse solutions written and checked on their own: tests/cli/verify_cgshop.mjs
+  # (BigInt rationals; the triangles from the .ele of the same run). Not timed.
+  if available nonobtuse; then
+    note "CG:SHOP 2025: non-obtuse solutions, verified"
+    for f in "$cgshop_dir"/*.instance.json; do
+      base="$RUNDIR/cgshop/$(basename "$f" .instance.json).solution"
+      rc=0
+      timeout $((2 * CGSHOP_LIMIT + 10)) ./build/acutemesh --mode nonobtuse --time-limit "$CGSHOP_LIMIT" \
+        --format cgshop,ele -o "$base" "$f" >/dev/null 2>&1 || rc=$?
+      if ((rc == 0)); then
+        node tests/cli/verify_cgshop.mjs "$f" "$base.solution.json" "$base.ele" >"$base.verify" 2>&1 || rc=$?
+      fi
+      echo "$rc" >"$base.verify.rc"
+      rm -f "$base.ele"
+    done
+  fi
 fi
 
 # --- report -----------------------------------------------------------------------------------

@@ -236,6 +236,8 @@ if (cgshopDir && existsSync(cgshopDir)) {
     inst.cdtAcute = inst.cdt?.rc === 0 && st('cdt')?.nonAcute === 0;
     inst.nonobtuseOk = inst.nonobtuse?.rc === 0 && st('nonobtuse')?.obtuse === 0;
     inst.acuteOk = inst.acute?.rc === 0 && st('acute')?.nonAcute === 0;
+    const verifyRc = path.join(runDir, 'cgshop', `${uid}.solution.verify.rc`);
+    inst.verified = existsSync(verifyRc) ? readFileSync(verifyRc, 'utf8').trim() === '0' : null;
     cg.push(inst);
   }
   const categories = [...new Set(cg.map((i) => i.category))].sort();
@@ -295,8 +297,16 @@ if (cgshopDir && existsSync(cgshopDir)) {
     ' --stats --no-output INSTANCE`): solved = exit 0 and no obtuse triangle (exact count). ' +
     'Steiner totals are over the instances we solved, next to the best known and aCute counts on the same instances. ' +
     'The CLI meshes CG:SHOP input with `--exact-segments` (every Steiner point on a segment exactly on it, as the exact ' +
-    'official verifier needs; the best-known solutions are exact rationals too).', '');
+    'official verifier needs) and, non-obtuse, `--exact-feet` (Steiner points at altitude feet on tilted segments are ' +
+    'the exact rationals, as in the best-known solutions; `exactPoints` in `--stats`, certified at those places).', '');
   cgSections.push(...nob, '');
+  const checked = cg.filter((i) => i.verified !== null);
+  if (checked.length)
+    cgSections.push(`Every non-obtuse solution written again (\`--format cgshop,ele\`) and checked on its own by ` +
+      '`tests/cli/verify_cgshop.mjs` (rational arithmetic on BigInt: the triangles of the .ele, counter-clockwise and ' +
+      'non-obtuse at the solution\'s coordinates, edges as listed, covering the region exactly, every segment a chain of ' +
+      `edges): ${checked.filter((i) => i.verified).length} of ${checked.length} pass` +
+      (checked.some((i) => !i.verified) ? ` (failing: ${checked.filter((i) => !i.verified).map((i) => i.uid).join(', ')}).` : '.'), '');
   cgSections.push('Acute (`--mode acute`): solved = exit 0 and no right or obtuse triangle. The best-known counts are for ' +
     'non-obtuse triangulations (no acute reference exists); they show how far an acute mesh is from the non-obtuse optimum.', '');
   cgSections.push(...acu, '');
