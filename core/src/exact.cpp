@@ -245,5 +245,33 @@ std::string rationalText(const BigInt& numerator, const BigInt& denominator) {
   return q == BigInt(1) ? p.decimal() : p.decimal() + "/" + q.decimal();
 }
 
+bool parseRational(const std::string& text, BigInt& numerator, BigInt& denominator) {
+  numerator = BigInt(0), denominator = BigInt(1);
+  BigInt* part = &numerator;
+  bool digits = false;
+  const size_t start = !text.empty() && text[0] == '-';
+  for (size_t i = start; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '/' && part == &numerator && digits) {
+      part = &(denominator = BigInt(0));
+      digits = false;
+    } else if (c >= '0' && c <= '9') {
+      *part = *part * BigInt(10) + BigInt(c - '0');
+      digits = true;
+    } else {
+      return false;
+    }
+  }
+  if (start) numerator = -numerator;
+  return digits && denominator.sign() > 0;
+}
+
+bool parseRationalPoint(const std::string& x, const std::string& y, RationalPoint& out) {
+  BigInt xn, xd, yn, yd;
+  if (!parseRational(x, xn, xd) || !parseRational(y, yn, yd)) return false;
+  out = {xn * yd, yn * xd, xd * yd};
+  return true;
+}
+
 }  // namespace detail
 }  // namespace acutemesh

@@ -56,6 +56,10 @@ int orientSign(const RationalPoint& p, const RationalPoint& q, const RationalPoi
 int dotSign(const RationalPoint& a, const RationalPoint& b, const RationalPoint& c);
 // "p/q" in lowest terms, or "p" when q is 1.
 std::string rationalText(const BigInt& numerator, const BigInt& denominator);
+// The reverse, for "p", "-p", "p/q" or "-p/q" (decimal digits, q > 0); false for anything else.
+bool parseRational(const std::string& text, BigInt& numerator, BigInt& denominator);
+// The point of Mesh::exactPoints' texts x and y; false if one is not a rational.
+bool parseRationalPoint(const std::string& x, const std::string& y, RationalPoint& out);
 
 }  // namespace detail
 }  // namespace acutemesh

@@ -491,24 +491,6 @@ TEST(CgshopSolution, EverySharedInstanceMeshedAndReadBack) {
   RecordProperty("steiner", static_cast<int>(steinerTotal));
 }
 
-// "p/q" or "p" back into a rational point's coordinate over w = q (for the check below).
-acutemesh::detail::RationalPoint parseExact(const ExactPoint& p) {
-  using acutemesh::detail::BigInt;
-  auto parse = [](const std::string& s, BigInt& num, BigInt& den) {
-    num = BigInt(0), den = BigInt(1);
-    BigInt* at = &num;
-    for (char c : s) {
-      if (c == '/') at = &(den = BigInt(0));
-      else if (c != '-') *at = *at * BigInt(10) + BigInt(c - '0');
-    }
-    if (s[0] == '-') num = -num;
-  };
-  BigInt xn, xd, yn, yd;
-  parse(p.x, xn, xd);
-  parse(p.y, yn, yd);
-  return {xn * yd, yn * xd, xd * yd};
-}
-
 // Exact altitude feet (Options::exactFeet) on instances whose boundaries are tilted, where
 // input vertices stand close to them: certified with the exact places, each on its segment
 // line and within rounding of its double, the solution written with them, and fewer Steiner
@@ -550,7 +532,7 @@ TEST(CgshopSolution, ExactFeetOnTiltedBoundaries) {
     for (size_t v = 0; v < m.vertexCount(); ++v) at[v] = detail::exactPoint(&m.points[2 * v]);
     for (const ExactPoint& p : m.exactPoints) {
       ASSERT_LT(p.vertex, m.vertexCount());
-      at[p.vertex] = parseExact(p);
+      ASSERT_TRUE(detail::parseRationalPoint(p.x, p.y, at[p.vertex])) << p.x << ", " << p.y;
       isExact[p.vertex] = 1;
       const double x = at[p.vertex].x.toDouble() / at[p.vertex].w.toDouble();
       const double y = at[p.vertex].y.toDouble() / at[p.vertex].w.toDouble();

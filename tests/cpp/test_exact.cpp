@@ -77,6 +77,21 @@ TEST(Rational, TextInLowestTerms) {
   EXPECT_EQ(detail::rationalText(BigInt(7), BigInt(1)), "7");
 }
 
+TEST(Rational, TextReadsBack) {
+  BigInt p, q;
+  for (const char* s : {"0", "7", "-7", "3/2", "-3/2", "123456789012345678901234567891/7"}) {
+    ASSERT_TRUE(detail::parseRational(s, p, q)) << s;
+    EXPECT_EQ(detail::rationalText(p, q), s);
+  }
+  for (const char* s : {"", "-", "/2", "1/", "1/0", "1/-2", "1.5", "1e3", " 1", "1/2/3", "--1"})
+    EXPECT_FALSE(detail::parseRational(s, p, q)) << s;
+  RationalPoint r;
+  ASSERT_TRUE(detail::parseRationalPoint("1/2", "-2/3", r));
+  EXPECT_EQ(detail::rationalText(r.x, r.w), "1/2");
+  EXPECT_EQ(detail::rationalText(r.y, r.w), "-2/3");
+  EXPECT_FALSE(detail::parseRationalPoint("1/2", "x", r));
+}
+
 TEST(Rational, FootOfAnAltitude) {
   // (0, 1) on the line through (0, 0) and (3, 1): t = 1/10, the foot (3/10, 1/10).
   const double v[2] = {0, 1}, a[2] = {0, 0}, b[2] = {3, 1};

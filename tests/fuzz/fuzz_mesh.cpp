@@ -74,27 +74,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   Mesh m = r.mesh;
   for (double& x : m.points) x = std::ldexp(x, -exponent);
   // Exact points (exactFeet) at their rationals, scaled the same way.
-  using acutemesh::detail::BigInt;
   using acutemesh::detail::RationalPoint;
   std::vector<RationalPoint> exact(m.vertexCount());
   std::vector<char> isExact(m.vertexCount(), 0);
-  auto parse = [](const std::string& s, BigInt& num, BigInt& den) {
-    num = BigInt(0), den = BigInt(1);
-    BigInt* at = &num;
-    for (char c : s) {
-      if (c == '/') at = &(den = BigInt(0));
-      else if (c != '-') *at = *at * BigInt(10) + BigInt(c - '0');
-    }
-    if (!s.empty() && s[0] == '-') num = -num;
-  };
   if (!r.mesh.exactPoints.empty() && !o.exactFeet) fuzz::fail("exact points without exactFeet");
   for (const ExactPoint& p : r.mesh.exactPoints) {
     if (p.vertex >= m.vertexCount()) fuzz::fail("exact point out of range");
-    BigInt xn, xd, yn, yd;
-    parse(p.x, xn, xd);
-    parse(p.y, yn, yd);
-    RationalPoint q{xn * yd, yn * xd, xd * yd};
-    if (q.w.sign() <= 0) fuzz::fail("exact point with a denominator <= 0");
+    RationalPoint q;
+    if (!acutemesh::detail::parseRationalPoint(p.x, p.y, q)) fuzz::fail("exact point not a rational");
     if (exponent > 0) q.w = q.w.shifted(exponent);
     else q.x = q.x.shifted(-exponent), q.y = q.y.shifted(-exponent);
     exact[p.vertex] = q, isExact[p.vertex] = 1;
