@@ -204,18 +204,27 @@ void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats
 }
 
 // The output triangles that miss the refinement target (the first kMaxMissedListed), for
-// Stats::missedTriangles: exact at 90 degrees, floating point for other bounds.
+// Stats::missedTriangles: exact at 90 degrees (at exact points, Mesh::exactPoints, there),
+// floating point for other bounds.
 void listMissedTriangles(const Options& options, const Mesh& mesh, Stats& stats) {
   const double cosMax = detail::portableCos(options.maxAngle * M_PI / 180);
   const double cosMin = detail::portableCos(options.minAngle * M_PI / 180);
+  std::vector<detail::RationalPoint> exact(mesh.exactPoints.empty() ? 0 : mesh.vertexCount());
+  std::vector<char> isExact(exact.size(), 0);
+  for (const ExactPoint& x : mesh.exactPoints)
+    isExact[x.vertex] = detail::parseRationalPoint(x.x, x.y, exact[x.vertex]);
   stats.missedTriangles.clear();
   for (size_t t = 0; t < mesh.triangleCount() && stats.missedTriangles.size() < kMaxMissedListed; ++t) {
+    const uint32_t* v = &mesh.triangles[3 * t];
     const double* p[3];
-    for (int k = 0; k < 3; ++k) p[k] = &mesh.points[2 * size_t(mesh.triangles[3 * t + k])];
+    for (int k = 0; k < 3; ++k) p[k] = &mesh.points[2 * size_t(v[k])];
+    const bool atExact = !isExact.empty() && (isExact[v[0]] || isExact[v[1]] || isExact[v[2]]);
+    detail::RationalPoint q[3];
+    for (int k = 0; atExact && k < 3; ++k) q[k] = isExact[v[k]] ? exact[v[k]] : detail::exactPoint(p[k]);
     bool miss = false;
     for (int k = 0; k < 3 && !miss; ++k) {
       const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
-      double d = dot2d(a, b, c);
+      int d = atExact ? detail::dotSign(q[k], q[(k + 1) % 3], q[(k + 2) % 3]) : sign(dot2d(a, b, c));
       double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
       double cosine = (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
       if (options.mode == Mode::Acute) miss = d <= 0 || (options.maxAngle < 90 && cosine <= cosMax);

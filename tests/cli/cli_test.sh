@@ -230,6 +230,12 @@ node -e "
   fs.writeFileSync('$work/feet.off.solution.json', JSON.stringify(s));"
 check "verifier rejects a foot off by one" \
   bash -c "! node '$here/verify_cgshop.mjs' '$ps' '$work/feet.off.solution.json' '$work/feet.ele' 2>/dev/null"
+# Stopped by a budget: the triangles listed as missing the target are the obtuse ones, counted
+# at the exact feet (a foot's double is a hair from right).
+check "exact feet, budget: exit 1" run 1 --mode nonobtuse --max-steiner 200 --stats --no-output "$ps"
+check "exact feet, budget: missed = obtuse" node -e "
+  const s = JSON.parse(require('fs').readFileSync('$work/out', 'utf8'));
+  process.exit(s.exactPoints > 0 && s.obtuse > 0 && s.missedTriangles.length === s.obtuse ? 0 : 1);"
 check "exact feet off" run 0 --mode nonobtuse --stats --no-exact-feet --format cgshop,ele -o "$work/nofeet" "$ps"
 check "exact feet off: none" grep -qF '"exactPoints": 0,' "$work/out"
 check "exact feet off: verified too" \
