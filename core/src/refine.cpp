@@ -356,6 +356,7 @@ class Refiner {
   bool tryMerge(uint32_t u, uint32_t w);
   int tryMergedPoint(const double* x);
   bool tryMergeOnSegment(uint32_t u, uint32_t w);
+  int tryPointOnSegment(const double* x, uint32_t footOf, const uint32_t* ends);
   void mergePoint(uint32_t u, uint32_t w, double* out);
   void clipToLinkSlabs(bool wedges);
   bool clipCentroid(double* out) const;
@@ -1665,48 +1666,71 @@ bool Refiner::tryRemoveFromSegment(uint32_t v) {
   return false;
 }
 
-// The same for consecutive Steiner points u, w on one segment: one point halfway between them
-// (on the input segment's line) in their place. If that fails, they go back onto their piece;
+// The same for consecutive Steiner points u, w on one segment: one point in their place, halfway
+// between them (on the input segment's line) or, with exact feet, at the foot of the altitude
+// from the vertex opposite u-w on either side. If none will do, they go back onto their piece;
 // should that be impossible, what stays out is left to the final repair pass.
 bool Refiner::tryMergeOnSegment(uint32_t u, uint32_t w) {
   uint32_t uw = T_.findEdge(u, w);
   if (uw == kNone || !T_.isFixed(uw) || T_.segment.empty() || T_.segment[uw] == kNone) return false;
   uint32_t seg = T_.segment[uw];
   const double pu[2] = {P(u)[0], P(u)[1]}, pw[2] = {P(w)[0], P(w)[1]};
-  uint32_t endsU[2], endsW[2], endsM[2];
+  uint32_t apexes[2] = {kNone, kNone};
+  for (int side = 0; side < 2 && feet_; ++side) {
+    const uint32_t e = side ? T_.opp[uw] : uw;
+    if (!T_.isGhost(e / 3) && T_.inside[e / 3]) apexes[side] = T_.tri[prev(e)];
+  }
+  uint32_t endsU[2], endsW[2];
   touched_.clear();
   T_.touched = &touched_;
   auto putBack = [&](uint32_t v, const uint32_t* ends) {
     uint32_t piece = T_.findEdge(ends[0], ends[1]);
     if (piece != kNone) T_.splitFixedEdge(piece, v);
   };
-  bool merged = false;
   if (T_.removeFromSegment(u, endsU)) {
     if (T_.removeFromSegment(w, endsW)) {
       SegmentLine line = segmentLine(seg, pu, pw);
-      double mid[2];
-      line.at(0.5 * (line.param(pu) + line.param(pw)), mid);
-      uint32_t m = addVertex(mid, kOnSegment);
-      uint32_t piece = T_.findEdge(endsW[0], endsW[1]);
-      if (piece != kNone && T_.splitFixedEdge(piece, m)) {
-        hole_ = touched_;
-        T_.touched = nullptr;
-        if (holeMeetsTarget()) return true;
-        undoMoves();
-        T_.touched = &touched_;
-        merged = T_.removeFromSegment(m, endsM);
+      int merged = 0;
+      for (int c = 0; c < 3 && merged == 0; ++c) {
+        const uint32_t footOf = c == 0 ? kNone : apexes[c - 1];
+        if (c > 0 && footOf == kNone) continue;
+        double x[2];
+        line.at(c == 0 ? 0.5 * (line.param(pu) + line.param(pw)) : line.param(P(footOf)), x);
+        merged = tryPointOnSegment(x, footOf, endsW);
       }
-      if (!merged && T_.vertexEdge[m] != kNone) {
+      if (merged == 1) return true;
+      if (merged == -1) {
         T_.touched = nullptr;
-        return false;  // m could not be taken out again: keep it (the final repair checks)
+        return false;
       }
-      dropLastVertex();
       putBack(w, endsW);
     }
     putBack(u, endsU);
   }
   T_.touched = nullptr;
   return false;
+}
+
+// With a merge's points out (tryMergeOnSegment): puts one at x on the piece between ends
+// (standing for footOf's altitude foot, if given and the double is not exactly it), and keeps
+// it if the hole then meets the target. As tryMergedPoint: 1 kept; 0 out again; -1 stuck.
+int Refiner::tryPointOnSegment(const double* x, uint32_t footOf, const uint32_t* ends) {
+  const uint32_t m = addVertex(x, kOnSegment);
+  const uint32_t piece = T_.findEdge(ends[0], ends[1]);
+  bool removedAgain = false;
+  if (piece != kNone && T_.splitFixedEdge(piece, m)) {
+    if (footOf != kNone && dot2d(P(m), P(footOf), P(ends[0])) != 0) footOf_[m] = footOf;
+    hole_ = touched_;
+    T_.touched = nullptr;
+    if (holeMeetsTarget()) return 1;
+    undoMoves();
+    T_.touched = &touched_;
+    uint32_t endsM[2];
+    removedAgain = T_.removeFromSegment(m, endsM);
+  }
+  if (!removedAgain && T_.vertexEdge[m] != kNone) return -1;
+  dropLastVertex();
+  return 0;
 }
 
 // Where one point would best stand in for free neighbours u and w: the centre of the region
