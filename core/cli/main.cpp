@@ -311,6 +311,17 @@ static int run(int argc, char** argv) {
   for (const PhaseTime& p : r.stats.phases) phases.push_back(p);
   std::vector<std::string> warnings = in.warnings;
   warnings.insert(warnings.end(), r.stats.warnings.begin(), r.stats.warnings.end());
+  if (writeOutput && !r.mesh.exactPoints.empty()) {
+    std::string rounding;  // the formats asked for that hold coordinates as doubles
+    for (const std::string& f : formats)
+      if (f == "node" || f == "poly" || f == "off" || f == "obj" || f == "svg")
+        rounding += (rounding.empty() ? "" : ", ") + f;
+    if (!rounding.empty())
+      warnings.push_back(std::to_string(r.mesh.exactPoints.size()) +
+                         " vertices stand at exact altitude feet, rationals that " + rounding +
+                         " round (a hair from their right angles there); cgshop and json hold "
+                         "them exactly (--no-exact-feet: none)");
+  }
   for (const std::string& w : warnings) std::fprintf(stderr, "acutemesh: warning: %s\n", w.c_str());
   if (r.status == Status::BadInput) {
     std::fprintf(stderr, "acutemesh: error: %s: %s\n", input.c_str(), r.message.c_str());

@@ -214,6 +214,7 @@ check "cgshop on JSON rings writes nothing" test ! -e "$work/r.solution.json"
 ps="$shared/cgshop2025/point-set_250_3c338713.instance.json"
 check "exact feet" run 0 --mode nonobtuse --stats --format cgshop,ele,json -o "$work/feet" "$ps"
 check "exact feet: counted in --stats" grep -qE '"exactPoints": [1-9][0-9]*,' "$work/out"
+check "exact feet: no warning with cgshop, ele, json" test ! -s "$work/err"
 check "exact feet: certified" grep -qF '"certified": true' "$work/out"
 check "exact feet: solution verified with BigInt rationals" \
   node "$here/verify_cgshop.mjs" "$ps" "$work/feet.solution.json" "$work/feet.ele"
@@ -230,6 +231,8 @@ node -e "
   fs.writeFileSync('$work/feet.off.solution.json', JSON.stringify(s));"
 check "verifier rejects a foot off by one" \
   bash -c "! node '$here/verify_cgshop.mjs' '$ps' '$work/feet.off.solution.json' '$work/feet.ele' 2>/dev/null"
+check "exact feet, .node: written" run 0 --mode nonobtuse -o "$work/feetnode" "$ps"
+check "exact feet, .node: says it rounds them" stderr_has "stand at exact altitude feet, rationals that node round"
 # Stopped by a budget: the triangles listed as missing the target are the obtuse ones, counted
 # at the exact feet (a foot's double is a hair from right).
 check "exact feet, budget: exit 1" run 1 --mode nonobtuse --max-steiner 200 --stats --no-output "$ps"
