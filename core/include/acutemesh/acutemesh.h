@@ -80,7 +80,7 @@ struct Options {
   // points are listed in Mesh::exactPoints with their exact coordinates (Mesh::points has a
   // double within rounding of them, on the same segment line), and the certificate is taken
   // there. For outputs that hold rationals (CG:SHOP 2025 solutions): with exactSegments,
-  // CG:SHOP non-obtuse needs 40% fewer Steiner points. Ignored for inputs that have to be
+  // CG:SHOP non-obtuse needs 60% fewer Steiner points. Ignored for inputs that have to be
   // scaled to be meshed exactly (coordinates beyond 2^+-64).
   bool exactFeet = false;
   // Threads for acute and non-obtuse refinement, which tries a few strategies at once where it
