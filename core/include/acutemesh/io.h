@@ -46,7 +46,8 @@ ParseResult parsePoly(std::string_view text, const std::string& name, Input& out
 ParseResult parseNode(std::string_view text, const std::string& name, Input& out);
 // JSON (strict RFC 8259 syntax, nesting depth limited): one top-level object, either
 //  - an acutemesh PSLG {"vertices": [[x,y],...], "segments": [[i,j],...], "holes": [[x,y],...]}
-//    (segments, holes optional; "triangles", as formatJson writes, is ignored), or
+//    (segments, holes optional; "triangles" and "exactPoints", as formatJson writes them,
+//    are ignored), or
 //  - {"rings": [[[x,y],...],...]}: each ring closes implicitly (a repeated first point at the
 //    end is dropped, with a warning) and becomes vertices plus directed segments in ring
 //    order; sets Input::hasRings, or
