@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "acutemesh/io.h"
+#include "exact.h"
 
 #if defined(__cpp_lib_to_chars) && !defined(ACUTEMESH_NO_FLOAT_CHARCONV)
 #define ACUTEMESH_FLOAT_TO_CHARS 1
@@ -456,6 +457,8 @@ std::string formatCgshopSolution(const Mesh& m, const std::string& instanceUid,
       s += k ? ",\n" : "\n";
       const ExactPoint* p = exact[steiner[k]];
       const std::string* text = p ? (axis ? &p->y : &p->x) : nullptr;
+      detail::BigInt numerator, denominator;  // (a text that is no rational: the double)
+      if (text && !detail::parseRational(*text, numerator, denominator)) text = nullptr;
       if (!text) {
         putExactRational(s, m.points[2 * steiner[k] + axis]);
       } else if (text->find('/') == std::string::npos) {

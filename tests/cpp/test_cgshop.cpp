@@ -370,6 +370,22 @@ TEST(CgshopSolution, RenumbersUsedSteinerPointsAndListsEachEdgeOnce) {
                        {0, 1}, {0, 4}, {1, 2}, {1, 4}, {1, 5}, {2, 5}, {4, 5}}));
 }
 
+// Exact points go in as their rationals (an integer as a number); a text that is no rational
+// (a C++ caller's mistake) leaves the double, so the solution stays valid JSON.
+TEST(CgshopSolution, ExactPointsAsTheirRationals) {
+  Mesh m;
+  m.points = {0, 0, 4, 0, 4, 4, 2, 1, 3.5, 2};
+  m.triangles = {0, 1, 3, 1, 2, 4, 1, 4, 3};
+  m.exactPoints = {{3, "7/3", "-2"}, {4, "x", "1/0"}};
+  const Json j = parse(formatCgshopSolution(m, "exact", 3));
+  ASSERT_EQ(j.kind, Json::Object);
+  std::vector<std::string> xs, ys;
+  for (const Json& v : j.get("steiner_points_x")->items) xs.push_back(token(v));
+  for (const Json& v : j.get("steiner_points_y")->items) ys.push_back(token(v));
+  EXPECT_EQ(xs, (std::vector<std::string>{"\"7/3\"", "\"7/2\""}));
+  EXPECT_EQ(ys, (std::vector<std::string>{"-2", "2"}));
+}
+
 TEST(CgshopSolution, EmptyMeshAndEscapedUid) {
   const std::string uid = "odd \"uid\" \\ with\nnewline\tand tab\x01";
   const Json j = parse(formatCgshopSolution(Mesh{}, uid, 0));

@@ -87,7 +87,7 @@ std::string formatSvg(const Mesh& m);
 // instanceVertexCount + k in "edges", instance vertices keep their index. Each coordinate is
 // exact: a JSON integer when the double is one (any size; -0 is 0), else the string "p/q" in
 // lowest terms (q a power of two); a vertex in m.exactPoints as its exact rational (a JSON
-// integer, or "p/q" in lowest terms). "edges" holds every undirected edge of every triangle once,
+// integer, or "p/q"; a text there that is no rational leaves the double). "edges" holds every undirected edge of every triangle once,
 // as [smaller, larger] sorted. The verifier adds the region boundary and constraints itself
 // and rejects isolated points, so an unused instance vertex (a duplicate, or one outside the
 // region) makes the solution invalid; this writes it anyway.
