@@ -237,6 +237,13 @@ int dotSign(const RationalPoint& a, const RationalPoint& b, const RationalPoint&
   return (bx * cx + by * cy).sign();
 }
 
+int triangleSigns(const double* const p[3], const RationalPoint* const at[3], int dots[3]) {
+  RationalPoint q[3];
+  for (int k = 0; k < 3; ++k) q[k] = at[k] ? *at[k] : exactPoint(p[k]);
+  for (int k = 0; k < 3; ++k) dots[k] = dotSign(q[k], q[(k + 1) % 3], q[(k + 2) % 3]);
+  return orientSign(q[0], q[1], q[2]);
+}
+
 std::string rationalText(const BigInt& numerator, const BigInt& denominator) {
   BigInt p = numerator, q = denominator;
   if (q.sign() < 0) p = -p, q = -q;

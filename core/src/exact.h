@@ -54,6 +54,9 @@ RationalPoint exactFoot(const RationalPoint& v, const double* a, const double* b
 // (b - a) . (c - a) (< 0: the angle at a is obtuse).
 int orientSign(const RationalPoint& p, const RationalPoint& q, const RationalPoint& r);
 int dotSign(const RationalPoint& a, const RationalPoint& b, const RationalPoint& c);
+// The triangle p[0], p[1], p[2] (doubles) with corner k at at[k] instead where that is not
+// null: the sign of its orientation (returned) and of each corner's dot product (dots[k]).
+int triangleSigns(const double* const p[3], const RationalPoint* const at[3], int dots[3]);
 // "p/q" in lowest terms, or "p" when q is 1.
 std::string rationalText(const BigInt& numerator, const BigInt& denominator);
 // The reverse, for "p", "-p", "p/q" or "-p/q" (decimal digits, q > 0); false for anything else.

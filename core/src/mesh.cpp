@@ -47,7 +47,8 @@ std::string checkInput(const Pslg& in) {
 void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
                  const Pslg& input, const std::vector<uint32_t>& inputOf,
                  const std::vector<uint8_t>& freeVertex,
-                 const std::vector<detail::ExactVertex>& exact, Mesh& mesh) {
+                 const std::vector<detail::ExactVertex>& exact, Mesh& mesh,
+                 std::vector<const detail::RationalPoint*>& exactAt) {
   uint32_t slots = T.triangleSlots(), total = T.vertexCount();
   uint32_t inputCount = uint32_t(inputOf.size());
   // index: store vertex -> output vertex. Input vertices keep their input index.
@@ -77,10 +78,13 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
     if (v < freeVertex.size() && freeVertex[v]) mesh.vertexKind[index[v]] = kFreeVertex;
   }
   mesh.exactPoints.clear();
-  for (const detail::ExactVertex& x : exact)
-    if (index[x.vertex] != kNone)
-      mesh.exactPoints.push_back({index[x.vertex], detail::rationalText(x.at.x, x.at.w),
-                                  detail::rationalText(x.at.y, x.at.w)});
+  exactAt.assign(exact.empty() ? 0 : nextIndex, nullptr);
+  for (const detail::ExactVertex& x : exact) {
+    if (index[x.vertex] == kNone) continue;
+    mesh.exactPoints.push_back({index[x.vertex], detail::rationalText(x.at.x, x.at.w),
+                                detail::rationalText(x.at.y, x.at.w)});
+    exactAt[index[x.vertex]] = &x.at;
+  }
   std::sort(mesh.exactPoints.begin(), mesh.exactPoints.end(),
             [](const ExactPoint& a, const ExactPoint& b) { return a.vertex < b.vertex; });
   mesh.triangles.resize(3 * size_t(triangles));
@@ -124,13 +128,15 @@ double measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside,
     double len2[3];  // squared length of the edge opposite corner k
     bool right = false, blunt = false;
     const bool atExact = !exactAt.empty() && (exactAt[v[0]] || exactAt[v[1]] || exactAt[v[2]]);
-    detail::RationalPoint q[3];
-    for (int k = 0; atExact && k < 3; ++k)
-      q[k] = exactAt[v[k]] ? *exactAt[v[k]] : detail::exactPoint(p[k]);
+    int dots[3];
+    if (atExact) {
+      const detail::RationalPoint* at[3] = {exactAt[v[0]], exactAt[v[1]], exactAt[v[2]]};
+      detail::triangleSigns(p, at, dots);
+    }
     for (int k = 0; k < 3; ++k) {
       const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
       len2[k] = (b[0] - c[0]) * (b[0] - c[0]) + (b[1] - c[1]) * (b[1] - c[1]);
-      int d = atExact ? detail::dotSign(q[k], q[(k + 1) % 3], q[(k + 2) % 3]) : sign(dot2d(a, b, c));
+      const int d = atExact ? dots[k] : sign(dot2d(a, b, c));
       right |= d <= 0;
       blunt |= d < 0;
     }
@@ -204,27 +210,27 @@ void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats
 }
 
 // The output triangles that miss the refinement target (the first kMaxMissedListed), for
-// Stats::missedTriangles: exact at 90 degrees (at exact points, Mesh::exactPoints, there),
-// floating point for other bounds.
-void listMissedTriangles(const Options& options, const Mesh& mesh, Stats& stats) {
+// Stats::missedTriangles: exact at 90 degrees (per output vertex, exactAt: the exact place of
+// the mesh's exact points, extractMesh's), floating point for other bounds.
+void listMissedTriangles(const Options& options, const Mesh& mesh,
+                         const std::vector<const detail::RationalPoint*>& exactAt, Stats& stats) {
   const double cosMax = detail::portableCos(options.maxAngle * M_PI / 180);
   const double cosMin = detail::portableCos(options.minAngle * M_PI / 180);
-  std::vector<detail::RationalPoint> exact(mesh.exactPoints.empty() ? 0 : mesh.vertexCount());
-  std::vector<char> isExact(exact.size(), 0);
-  for (const ExactPoint& x : mesh.exactPoints)
-    isExact[x.vertex] = detail::parseRationalPoint(x.x, x.y, exact[x.vertex]);
   stats.missedTriangles.clear();
   for (size_t t = 0; t < mesh.triangleCount() && stats.missedTriangles.size() < kMaxMissedListed; ++t) {
     const uint32_t* v = &mesh.triangles[3 * t];
     const double* p[3];
     for (int k = 0; k < 3; ++k) p[k] = &mesh.points[2 * size_t(v[k])];
-    const bool atExact = !isExact.empty() && (isExact[v[0]] || isExact[v[1]] || isExact[v[2]]);
-    detail::RationalPoint q[3];
-    for (int k = 0; atExact && k < 3; ++k) q[k] = isExact[v[k]] ? exact[v[k]] : detail::exactPoint(p[k]);
+    const bool atExact = !exactAt.empty() && (exactAt[v[0]] || exactAt[v[1]] || exactAt[v[2]]);
+    int dots[3];
+    if (atExact) {
+      const detail::RationalPoint* at[3] = {exactAt[v[0]], exactAt[v[1]], exactAt[v[2]]};
+      detail::triangleSigns(p, at, dots);
+    }
     bool miss = false;
     for (int k = 0; k < 3 && !miss; ++k) {
       const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
-      int d = atExact ? detail::dotSign(q[k], q[(k + 1) % 3], q[(k + 2) % 3]) : sign(dot2d(a, b, c));
+      const int d = atExact ? dots[k] : sign(dot2d(a, b, c));
       double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
       double cosine = (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
       if (options.mode == Mode::Acute) miss = d <= 0 || (options.maxAngle < 90 && cosine <= cosMax);
@@ -238,7 +244,8 @@ void listMissedTriangles(const Options& options, const Mesh& mesh, Stats& stats)
 
 // Whether the refined mesh meets the target: exactly (dot-product signs) at 90 degrees, in
 // floating point for other angle bounds.
-void certify(const Options& options, double largestArea, Stats& stats, Result& result) {
+void certify(const Options& options, double largestArea,
+             const std::vector<const detail::RationalPoint*>& exactAt, Stats& stats, Result& result) {
   bool met = true;
   if (options.mode == Mode::Acute) {
     met = stats.nonAcute == 0 && (options.maxAngle >= 90 || stats.maxAngle < options.maxAngle);
@@ -252,7 +259,7 @@ void certify(const Options& options, double largestArea, Stats& stats, Result& r
   // An area bound counts too: a quality run stopped by its time limit has triangles above it.
   if (options.maxArea > 0 && largestArea > options.maxArea) met = false;
   stats.targetMet = met;
-  if (!met) listMissedTriangles(options, result.mesh, stats);
+  if (!met) listMissedTriangles(options, result.mesh, exactAt, stats);
   if (!met && result.status == Status::Ok) {
     result.status = Status::TargetNotMet;
     uint32_t missing = options.mode == Mode::Acute       ? stats.nonAcute
@@ -402,7 +409,8 @@ Result meshInRange(const Pslg& input, const Options& options) {
     }
   }
 
-  extractMesh(T, inside, input, inputOf, freeVertex, exact, result.mesh);
+  std::vector<const detail::RationalPoint*> exactAt;  // per output vertex (into exact)
+  extractMesh(T, inside, input, inputOf, freeVertex, exact, result.mesh, exactAt);
   stats.vertices = uint32_t(result.mesh.vertexCount());
   stats.triangles = uint32_t(result.mesh.triangleCount());
   stats.segments = uint32_t(result.mesh.segments.size() / 2);
@@ -410,7 +418,7 @@ Result meshInRange(const Pslg& input, const Options& options) {
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
   double largestArea = measureAngles(T, inside, exact, stats);
-  if (refining) certify(target, largestArea, stats, result);
+  if (refining) certify(target, largestArea, exactAt, stats, result);
   endPhase("output");
   stats.seconds = budget.elapsed();
   return result;

@@ -275,6 +275,12 @@ class Refiner {
   Corner worstCorner(const double* const p[3], int footCorners = 0) const;
   int footCorners(uint32_t t) const;
   bool footEdge(uint32_t e) const { return T_.isFixed(e) && !isChord(e); }
+  // Segment vertex v, just made at the altitude foot of footOf (kNone: of none), stands for
+  // that foot (footOf_) unless the double is exactly it (as on axis-parallel segments: then
+  // no standing for is needed). along: another point of v's segment line.
+  void standForFoot(uint32_t v, uint32_t footOf, const double* along) {
+    if (feet_ && footOf != kNone && dot2d(P(v), P(footOf), along) != 0) footOf_[v] = footOf;
+  }
   void segmentEnds(uint32_t f, uint32_t spoke, const double*& a, const double*& b) const;
   double shortestEdge2(uint32_t t) const;
   bool repair(uint32_t t, Corner c);
@@ -479,6 +485,10 @@ Corner Refiner::worstCorner(uint32_t t) const {
 // misses 90 degrees by about 1e-9: CG:SHOP non-obtuse needs half the points with 1e-9 or
 // more, no gain at 1e-12. exactFeet() then checks every triangle at the exact foot.
 constexpr double kFootSlack = 1e-7;
+// kFootSlack for the angle at a between b and c, in the units of dot2d(a, b, c).
+double footSlack(const double* a, const double* b, const double* c) {
+  return kFootSlack * std::sqrt(dist2(a, b) * dist2(a, c));
+}
 // footCorners' flag for a triangle at a foot: its other corners must be sharper than 90
 // degrees by kFootSlack (as cosines), for the foot's move to its exact place.
 constexpr int kNearFoot = 8;
@@ -507,7 +517,7 @@ Corner Refiner::worstCorner(const double* const p[3], int footCorners) const {
       const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
       double d = dot2d(a, b, c);
       if (footCorners & kNearFoot) {
-        const double slack = kFootSlack * std::sqrt(dist2(a, b) * dist2(a, c));
+        const double slack = footSlack(a, b, c);
         if (footCorners >> k & 1) {
           if (d < -slack) return {k, true};
         } else if (d < slack) {
@@ -569,9 +579,7 @@ bool Refiner::splitSubsegment(uint32_t e, double preferred, uint32_t footOf) {
     if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
     uint32_t v = addVertex(m, seg != kNone ? kOnSegment : kOnHull);
     if (T_.splitFixedEdge(e, v)) {
-      // (A foot a double holds exactly, as on axis-parallel segments, needs no standing for.)
-      if (ratio == preferred && feet_ && footOf != kNone && dot2d(P(v), P(footOf), pa) != 0)
-        footOf_[v] = footOf;
+      if (ratio == preferred) standForFoot(v, footOf, pa);
       return true;
     }
     dropLastVertex();
@@ -1416,10 +1424,12 @@ int Refiner::badChange(const double* x, uint32_t split, uint32_t footOf) const {
       // A split point at footOf's foot: its corner between a piece of the subsegment and
       // the edge to footOf counts as right (footCorners).
       int foot = 0;
-      if (feet_ && footOf != kNone)
+      if (feet_ && footOf != kNone) {
+        foot = kNearFoot;
         for (uint32_t end : {T_.tri[split], T_.tri[next(split)]})
-          foot |= kNearFoot | int((T_.tri[e] == end && T_.tri[next(e)] == footOf) ||
-                                  (T_.tri[next(e)] == end && T_.tri[e] == footOf));
+          foot |= int((T_.tri[e] == end && T_.tri[next(e)] == footOf) ||
+                      (T_.tri[next(e)] == end && T_.tri[e] == footOf));
+      }
       change += worstCorner(p, foot).k >= 0;
     }
   }
@@ -1726,7 +1736,7 @@ int Refiner::tryPointOnSegment(const double* x, uint32_t footOf, const uint32_t*
   const uint32_t piece = T_.findEdge(ends[0], ends[1]);
   bool removedAgain = false;
   if (piece != kNone && T_.splitFixedEdge(piece, m)) {
-    if (footOf != kNone && dot2d(P(m), P(footOf), P(ends[0])) != 0) footOf_[m] = footOf;
+    standForFoot(m, footOf, P(ends[0]));
     hole_ = touched_;
     T_.touched = nullptr;
     if (holeMeetsTarget()) return 1;
@@ -1949,8 +1959,8 @@ void Refiner::mergeSteinerPoints() {
 void Refiner::segmentEnds(uint32_t f, uint32_t spoke, const double*& a, const double*& b) const {
   const uint32_t seg = T_.segment.empty() ? kNone : T_.segment[spoke];
   if (seg != kNone) {
-    a = &input_.points[2 * size_t(input_.segments[2 * size_t(seg)])];
-    b = &input_.points[2 * size_t(input_.segments[2 * size_t(seg) + 1])];
+    const SegmentLine line = segmentLine(seg, P(f), P(f));
+    a = line.start, b = line.end;
     return;
   }
   // The next vertex along the fixed edges from `from`, coming from `before`.
@@ -1985,11 +1995,11 @@ bool feetKeepTarget(const Triangulation& T, const std::vector<ExactVertex>& exac
     if (T.isFree(t) || T.isGhost(t) || !T.inside[t]) continue;
     const uint32_t* v = &T.tri[3 * t];
     if (!at[v[0]] && !at[v[1]] && !at[v[2]]) continue;
-    RationalPoint p[3];
-    for (int k = 0; k < 3; ++k) p[k] = at[v[k]] ? *at[v[k]] : exactPoint(T.point(v[k]));
-    if (orientSign(p[0], p[1], p[2]) <= 0) return false;
-    for (int k = 0; k < 3; ++k)
-      if (dotSign(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) < 0) return false;
+    const double* p[3] = {T.point(v[0]), T.point(v[1]), T.point(v[2])};
+    const RationalPoint* exactAt[3] = {at[v[0]], at[v[1]], at[v[2]]};
+    int dots[3];
+    if (triangleSigns(p, exactAt, dots) <= 0 || std::min({dots[0], dots[1], dots[2]}) < 0)
+      return false;
   }
   return true;
 }
@@ -2008,7 +2018,7 @@ bool Refiner::exactFeet(std::vector<ExactVertex>& exact) const {
     const uint32_t* v = &T_.tri[3 * t];
     for (uint32_t k = 0; k < 3; ++k) {
       const double *a = P(v[k]), *b = P(v[(k + 1) % 3]), *c = P(v[(k + 2) % 3]);
-      if ((mask >> k & 1) && std::fabs(dot2d(a, b, c)) <= kFootSlack * std::sqrt(dist2(a, b) * dist2(a, c)))
+      if ((mask >> k & 1) && std::fabs(dot2d(a, b, c)) <= footSlack(a, b, c))
         spokeOf[v[k]] = footEdge(3 * t + k) ? 3 * t + k : 3 * t + (k + 2) % 3;
     }
   }
