@@ -201,7 +201,7 @@ class Refiner {
     double cap = std::max(20000.0, 50.0 * inputCount), area = 0;
     if (options.maxArea > 0) {
       for (uint32_t t = 0; t < T.triangleSlots(); ++t)
-        if (!T.isFree(t) && T.inside[t] && !T.isGhost(t))
+        if (T.inDomain(t))
           area += 0.5 * orient2d(P(T.tri[3 * t]), P(T.tri[3 * t + 1]), P(T.tri[3 * t + 2]));
       cap += 4 * area / options.maxArea;
     }
@@ -269,7 +269,7 @@ class Refiner {
   Corner worstCorner(uint32_t t) const;
   // Triangle slot t is a triangle of the domain that misses the target.
   bool missesTarget(uint32_t t) const {
-    return !T_.isFree(t) && T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0;
+    return T_.inDomain(t) && worstCorner(t).k >= 0;
   }
   // footCorners: corners that may stand for exact right angles (see footCorners(t)).
   Corner worstCorner(const double* const p[3], int footCorners = 0) const;
@@ -605,8 +605,8 @@ bool Refiner::splitChord(uint32_t e) {
   // the chords that are there afterwards.
   uint32_t outer = T_.tri[prev(e)] == c ? T_.opp[e] / 3 : e / 3, reached = kNone;
   Location loc;
-  if (firstFixedCrossed(outer, m, reached) == kNone && reached != kNone && T_.inside[reached] &&
-      !T_.isGhost(reached))
+  if (firstFixedCrossed(outer, m, reached) == kNone && reached != kNone &&
+      T_.inDomain(reached))
     loc = T_.locate(m, reached);
   bool placed = (loc.where == Where::InTriangle ||
                  (loc.where == Where::OnEdge && !T_.isFixed(loc.edge))) &&
@@ -657,7 +657,7 @@ double Refiner::readStar(uint32_t v) {
   bool badBeforeFirst = false;
   do {
     uint32_t t = e / 3;
-    bool inside = T_.inside[t] && !T_.isGhost(t);
+    bool inside = T_.inDomain(t);
     if (T_.isFixed(e)) {
       const double* pu = P(T_.tri[next(e)]);
       spokes_.push_back({T_.tri[next(e)], portableAtan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
@@ -801,7 +801,7 @@ void Refiner::walkVoronoi(uint32_t t, Keep keep, Visit visit) const {
     uint32_t u = ring[head++];
     for (uint32_t e = 3 * u; e < 3 * u + 3; ++e) {
       uint32_t n = T_.opp[e] / 3;
-      if (T_.isFixed(e) || !T_.inside[n] || T_.isGhost(n) || count == 64) continue;
+      if (T_.isFixed(e) || !T_.inDomain(n) || count == 64) continue;
       if (std::find(ring, ring + count, n) != ring + count) continue;
       const uint32_t* w = &T_.tri[3 * n];
       double c[2];
@@ -921,13 +921,13 @@ bool Refiner::insertSteiner(uint32_t from, const double* x, CavityRim rim) {
   Location loc = T_.locate(x, from);
   if (loc.where == Where::Failed || loc.where == Where::OnVertex) return false;
   bool reachable = std::find(cavity_.begin(), cavity_.end(), loc.tri) != cavity_.end();
-  if (!reachable || !T_.inside[loc.tri] || T_.isGhost(loc.tri)) {
+  if (!reachable || !T_.inDomain(loc.tri)) {
     if (beyond != kNone) return splitSubsegment(beyond);
     // Relocation leaves the triangulation not quite Delaunay in places, and the cavity can
     // then miss x: the straight walk from `from` to x decides instead.
     uint32_t reached = kNone, crossed = firstFixedCrossed(from, x, reached);
     if (crossed != kNone) return splitSubsegment(crossed);
-    if (reached == kNone || !T_.inside[reached] || T_.isGhost(reached)) return false;
+    if (reached == kNone || !T_.inDomain(reached)) return false;
   }
   if (loc.where == Where::OnEdge && T_.isFixed(loc.edge)) return splitSubsegment(loc.edge);
   for (uint32_t k = 0; k < 3; ++k)
@@ -990,7 +990,7 @@ bool Refiner::starMeetsTarget(uint32_t a) const {
   uint32_t e0 = T_.vertexEdge[a], e = e0;
   do {
     uint32_t t = e / 3;
-    if (T_.inside[t] && !T_.isGhost(t) && worstCorner(t).k >= 0) return false;
+    if (T_.inDomain(t) && worstCorner(t).k >= 0) return false;
     e = T_.opp[prev(e)];
   } while (e != e0);
   return true;
@@ -1252,7 +1252,7 @@ bool Refiner::relocate(uint32_t a) {
   std::vector<uint32_t>& ring = ring_;
   ring.clear();
   do {
-    if (T_.isGhost(e / 3) || T_.isFixed(e) || !T_.inside[e / 3]) return false;
+    if (T_.isFixed(e) || !T_.inDomain(e / 3)) return false;
     ring.push_back(T_.tri[next(e)]);
     e = T_.opp[prev(e)];
   } while (e != e0);
@@ -1480,7 +1480,7 @@ int Refiner::splitBadChange(uint32_t e, const double* m, uint32_t footOf) {
   cavity_.clear();
   for (uint32_t side : {e, T_.opp[e]}) {
     uint32_t t = side / 3;
-    if (!T_.isFree(t) && T_.inside[t] && !T_.isGhost(t)) cavity_.push_back(t);
+    if (T_.inDomain(t)) cavity_.push_back(t);
   }
   growCavity(m);
   return badChange(m, e, footOf);
@@ -1521,7 +1521,7 @@ void Refiner::cutAtFeet() {
   for (int pass = 0; pass < 4; ++pass) {
     bool changed = false;
     for (uint32_t t = 0; t < T_.triangleSlots(); ++t) {
-      if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t)) continue;
+      if (!T_.inDomain(t)) continue;
       Corner c = worstCorner(t);
       uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
       if (c.k < 0 || !c.large || !T_.isFixed(opposite)) continue;
@@ -1612,7 +1612,7 @@ StepResult Refiner::repairAll() {
   const bool byGain = strategy_.fewestBadFirst && (acute_ || nonObtuse_) && options_.maxArea <= 0;
   queue.reset(options_.maxArea > 0 ? Order::FactorsOfTwo : byGain ? Order::FewestBadFirst : Order::Largest);
   auto push = [&](uint32_t t) {
-    if (T_.isFree(t) || !T_.inside[t] || T_.isGhost(t)) return;
+    if (!T_.inDomain(t)) return;
     Corner c = worstCorner(t);
     if (c.k >= 0) queue.push({byGain ? repairGain(t, c) : 0, shortestEdge2(t), t});
   };
@@ -1631,7 +1631,7 @@ StepResult Refiner::repairAll() {
       return {Status::TargetNotMet, "Steiner point budget used up before every triangle met "
                                     "the target"};
     const uint32_t t = entry.t;
-    if (T_.isFree(t) || !T_.inside[t] || shortestEdge2(t) != entry.size) continue;
+    if (!T_.inDomain(t) || shortestEdge2(t) != entry.size) continue;
     Corner c = worstCorner(t);
     if (c.k < 0) continue;
     if (byGain) {
@@ -1717,7 +1717,7 @@ bool Refiner::tryMergeOnSegment(uint32_t u, uint32_t w) {
   uint32_t apexes[2] = {kNone, kNone};
   for (int side = 0; side < 2 && feet_; ++side) {
     const uint32_t e = side ? T_.opp[uw] : uw;
-    if (!T_.isGhost(e / 3) && T_.inside[e / 3]) apexes[side] = T_.tri[prev(e)];
+    if (T_.inDomain(e / 3)) apexes[side] = T_.tri[prev(e)];
   }
   uint32_t endsU[2], endsW[2];
   touched_.clear();
@@ -1781,7 +1781,7 @@ void Refiner::mergePoint(uint32_t u, uint32_t w, double* out) {
   for (uint32_t c : {u, w}) {
     uint32_t e0 = T_.vertexEdge[c], e = e0;
     do {
-      if (T_.isGhost(e / 3) || !T_.inside[e / 3]) return;
+      if (!T_.inDomain(e / 3)) return;
       uint32_t x = T_.tri[next(e)], y = T_.tri[prev(e)];
       if (x != u && x != w && y != u && y != w) linkEdges_.push_back({x, y});
       e = T_.opp[prev(e)];
@@ -2014,7 +2014,7 @@ bool feetKeepTarget(const Triangulation& T, const std::vector<ExactVertex>& exac
   std::vector<const RationalPoint*> at(T.vertexCount(), nullptr);
   for (const ExactVertex& x : exact) at[x.vertex] = &x.at;
   for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
-    if (T.isFree(t) || T.isGhost(t) || !T.inside[t]) continue;
+    if (!T.inDomain(t)) continue;
     const uint32_t* v = &T.tri[3 * t];
     if (!at[v[0]] && !at[v[1]] && !at[v[2]]) continue;
     const double* p[3] = {T.point(v[0]), T.point(v[1]), T.point(v[2])};
@@ -2035,7 +2035,7 @@ bool Refiner::exactFeet(std::vector<ExactVertex>& exact) const {
   if (!feet_) return true;
   std::vector<uint32_t> spokeOf(T_.vertexCount(), kNone);  // a piece of its segment
   for (uint32_t t = 0; t < T_.triangleSlots(); ++t) {
-    if (T_.isFree(t) || T_.isGhost(t) || !T_.inside[t]) continue;
+    if (!T_.inDomain(t)) continue;
     const int mask = footCorners(t);
     const uint32_t* v = &T_.tri[3 * t];
     for (uint32_t k = 0; k < 3; ++k) {

@@ -69,6 +69,8 @@ class Triangulation {
     return tri[3 * t] == kGhost || tri[3 * t + 1] == kGhost || tri[3 * t + 2] == kGhost;
   }
   bool isFree(uint32_t t) const { return tri[3 * t] == kNone; }
+  // A live, real triangle of the domain (refinement, which keeps `inside`).
+  bool inDomain(uint32_t t) const { return inside[t] && !isFree(t) && !isGhost(t); }
   bool isFixed(uint32_t e) const { return fixed[e] != 0; }
 
   // Appends a vertex (not yet connected) and returns its index.
