@@ -1282,10 +1282,11 @@ bool Refiner::relocate(uint32_t a) {
 }
 
 // Whether every corner of convex polygon `poly` lies inside the diametral disk of one edge of
-// the link in ring_, by more than rounding: then so does every point relocate() samples in it,
-// and a would make an obtuse angle there (acute and non-obtuse: moveTo would refuse each).
-// A third of the regions clipped on CG:SHOP's slowest acute instance are such; trying their
-// samples in vain took 8% of its time.
+// the link in ring_, with a margin: then so does every point relocate() samples in it (convex
+// combinations of the corners), and a would make an obtuse angle there, which moveTo refuses in
+// acute and non-obtuse. A third of the regions clipped on CG:SHOP's slowest acute instance are
+// such, and trying their samples in vain took 8% of its time. (The test only gives up moves, so
+// whatever rounding does it cannot let a bad one through; no mesh we have changed by it.)
 bool Refiner::insideOneDiametralDisk(const std::vector<std::array<double, 2>>& poly) const {
   const size_t n = ring_.size();
   for (size_t i = 0; i < n; ++i) {
@@ -1294,8 +1295,8 @@ bool Refiner::insideOneDiametralDisk(const std::vector<std::array<double, 2>>& p
     for (size_t k = 0; k < poly.size() && all; ++k) {
       const double ux = u[0] - poly[k][0], uy = u[1] - poly[k][1];
       const double vx = v[0] - poly[k][0], vy = v[1] - poly[k][1];
-      const double dot = ux * vx + uy * vy, scale = (std::fabs(ux) + std::fabs(uy)) * (std::fabs(vx) + std::fabs(vy));
-      all = dot < -1e-9 * scale;
+      const double scale = (std::fabs(ux) + std::fabs(uy)) * (std::fabs(vx) + std::fabs(vy));
+      all = ux * vx + uy * vy < -1e-9 * scale;
     }
     if (all) return true;
   }
