@@ -92,6 +92,8 @@ struct CoordinateRange {
 };
 bool exactScale(const CoordinateRange& range, int& exponent);
 std::string rangeMessage(const CoordinateRange& range);
+// An angle for messages: "40 degrees", "16.4926 degrees".
+std::string degreesText(double degrees);
 bool scaleExactly(std::vector<double>& xy, int exponent);
 
 }  // namespace acutemesh::detail

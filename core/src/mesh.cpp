@@ -2,6 +2,7 @@
 // then the output mesh and its figures.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <new>
 #include <stdexcept>
@@ -195,18 +196,18 @@ double smallestInputAngle(const Pslg& in) {
 // Reports the smallest input angle and says when it makes the target unreachable: corners
 // of that angle stay in the mesh, and they force an angle of at least 90 - angle / 2 nearby.
 void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats) {
+  using detail::degreesText;
   stats.smallestInputAngle = smallestInputAngle(input);
-  auto degrees = [](double x) { return std::to_string(x) + " degrees"; };
+  const std::string smallest = degreesText(stats.smallestInputAngle);
   if (target.minAngle > stats.smallestInputAngle)
-    stats.warnings.push_back("the smallest input angle (" + degrees(stats.smallestInputAngle) +
-                             ") is below the minimum angle asked for (" +
-                             degrees(target.minAngle) + "): triangles there cannot meet it");
+    stats.warnings.push_back("the smallest input angle (" + smallest + ") is below the minimum "
+                             "angle asked for (" + degreesText(target.minAngle) +
+                             "): triangles there cannot meet it");
   double bound = 90 - stats.smallestInputAngle / 2;
   if (target.mode == Mode::Acute && target.maxAngle < 90 && target.maxAngle <= bound)
-    stats.warnings.push_back("the smallest input angle (" + degrees(stats.smallestInputAngle) +
-                             ") forces some angle of at least " + degrees(bound) +
-                             ": a maximum angle of " + degrees(target.maxAngle) +
-                             " cannot be met");
+    stats.warnings.push_back("the smallest input angle (" + smallest + ") forces some angle of at "
+                             "least " + degreesText(bound) + ": a maximum angle of " +
+                             degreesText(target.maxAngle) + " cannot be met");
 }
 
 // The output triangles that miss the refinement target (the first kMaxMissedListed), for
@@ -306,6 +307,12 @@ bool exactScale(const CoordinateRange& r, int& exponent) {
   // largest allows.
   exponent = r.largest - kNear;
   return r.smallest - exponent >= kLowest;
+}
+
+std::string degreesText(double degrees) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%g degrees", degrees);
+  return text;
 }
 
 std::string rangeMessage(const CoordinateRange& r) {

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <string>
 #if !defined(__EMSCRIPTEN__) || defined(__EMSCRIPTEN_PTHREADS__)
 #include <thread>
 #define ACUTEMESH_STRATEGY_THREADS 1
@@ -173,6 +174,25 @@ struct Strategy {
 // A run's Steiner limit where strategies run concurrently (refineWithStrategies): it may
 // tighten while the run goes on, so the run reads it at every check, and publishes the vertex
 // count it checked.
+// The domain's area where an area bound needs it (0 otherwise).
+double domainArea(const Triangulation& T, const Options& options) {
+  double area = 0;
+  if (options.maxArea > 0)
+    for (uint32_t t = 0; t < T.triangleSlots(); ++t)
+      if (T.inDomain(t))
+        area += 0.5 * orient2d(T.point(T.tri[3 * t]), T.point(T.tri[3 * t + 1]), T.point(T.tri[3 * t + 2]));
+  return area;
+}
+
+// The Steiner points a run may make: Options::maxSteiner, or without a budget from the caller
+// 50 per input vertex, at least 20000, and with an area bound room for about two triangles of
+// that area per unit of domain area (`area`, domainArea's).
+double steinerBudget(const Pslg& input, const Options& options, double area) {
+  if (options.maxSteiner) return options.maxSteiner;
+  double cap = std::max(20000.0, 50.0 * double(input.vertexCount()));
+  return options.maxArea > 0 ? cap + 4 * area / options.maxArea : cap;
+}
+
 struct SteinerGate {
   std::atomic<uint32_t> limit{0};
   std::atomic<uint32_t> checked{0};
@@ -196,17 +216,8 @@ class Refiner {
     strictMax_ = acute_ && options.maxAngle < 90;
     cosMin_ = portableCos(options.minAngle * kDegree);
     cosQuality_ = portableCos(std::min(options.minAngle + kQualityRoom, 60.0) * kDegree);
-    // Without a budget from the caller: 50 points per input vertex, at least 20000, and with
-    // an area bound room for about two triangles of that area per unit of domain area.
-    double cap = std::max(20000.0, 50.0 * inputCount), area = 0;
-    if (options.maxArea > 0) {
-      for (uint32_t t = 0; t < T.triangleSlots(); ++t)
-        if (T.inDomain(t))
-          area += 0.5 * orient2d(P(T.tri[3 * t]), P(T.tri[3 * t + 1]), P(T.tri[3 * t + 2]));
-      cap += 4 * area / options.maxArea;
-    }
-    if (options.maxSteiner) cap = options.maxSteiner;
-    budgetCap_ = cap;
+    double area = domainArea(T, options);
+    budgetCap_ = steinerBudget(input, options, area);
     startVertices_ = T.vertexCount();
     steinerLimit_ = steinerLimitWith(steinerCap);
     if (options.maxArea > 0) {
@@ -2304,11 +2315,21 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
 // cost little where the first is already good.
 // A bound below 90 degrees is best effort: if no strategy reaches it with half the Steiner
 // budget, the input is meshed acute from the start again, so a run that falls short still ends
-// acute and certified (exit 1) rather than half refined.
+// acute and certified (exit 1) rather than half refined. So is a minimum angle above
+// kSureMinAngle: beyond it Delaunay refinement need not terminate (the seed's refinement
+// "generally" does up to 42 degrees; ours wanders on the plate and the airfoil at 42, its
+// smallest angle sinking to 12-17 degrees as the points run out), so a run that uses half the
+// budget is made again to kSureMinAngle.
 //
 // Exact feet (non-obtuse, Options::exactFeet): should some triangle around them not be right
 // at their exact positions after all (or a vertex stand for two feet), the run is made again
 // without them; not when a budget stopped it (the certificate counts what is left).
+namespace {
+// The largest minimum angle quality refinement reaches on every input we have (whose input
+// angles allow it; Refine.QualityReachesItsMinimumAngle).
+constexpr double kSureMinAngle = 40;
+}  // namespace
+
 StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
                   const Budget& budget, std::vector<uint8_t>& freeVertex,
                   std::vector<ExactVertex>& exact) {
@@ -2325,23 +2346,38 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
     refineWithStrategies(T, input, plain, budget, 0, freeVertex, result, exact, feetHeld);
     return result;
   }
-  if (options.mode != Mode::Acute || !(options.maxAngle < 90)) {
+  const bool acuteBelow90 = options.mode == Mode::Acute && options.maxAngle < 90;
+  const bool qualityBeyondSure = options.mode == Mode::Quality && options.minAngle > kSureMinAngle;
+  if (!acuteBelow90 && !qualityBeyondSure) {
     refineWithStrategies(T, input, options, budget, 0, freeVertex, result, exact, feetHeld);
     return result;
   }
   const Triangulation start = T;
-  uint32_t half = std::max<uint32_t>(1, (options.maxSteiner ? options.maxSteiner
-                                                            : uint32_t(std::max(20000.0, 50.0 * input.vertexCount()))) / 2);
-  if (refineWithStrategies(T, input, options, budget, half, freeVertex, result, exact, feetHeld))
-    return result;
-  if (result.status == Status::Cancelled) return result;
-  Options acute = options;
-  acute.maxAngle = 90;
+  const uint32_t half = uint32_t(std::clamp(steinerBudget(input, options, domainArea(T, options)) / 2,
+                                            1.0, double(kMaxVertices)));
+  bool met = refineWithStrategies(T, input, options, budget, half, freeVertex, result, exact, feetHeld);
+  if (result.status == Status::Cancelled || budget.stop()) return result;
+  Options sure = options;
+  if (acuteBelow90) {
+    if (met) return result;
+    sure.maxAngle = 90;
+    T = start;
+    if (!refineWithStrategies(T, input, sure, budget, 0, freeVertex, result, exact, feetHeld))
+      return result;
+    return {Status::TargetNotMet,
+            "the bound of " + degreesText(options.maxAngle) + " was not reached; the mesh is acute"};
+  }
+  // Quality: a run that ended short of the target for lack of points (not for input angles
+  // below it, which no point mends) has been wandering.
+  if (T.vertexCount() < start.vertexCount() + half) return result;
+  sure.minAngle = kSureMinAngle;
   T = start;
-  if (!refineWithStrategies(T, input, acute, budget, 0, freeVertex, result, exact, feetHeld))
-    return result;
-  return {Status::TargetNotMet, "the bound of " + std::to_string(options.maxAngle) +
-                                    " degrees was not reached; the mesh is acute"};
+  refineWithStrategies(T, input, sure, budget, 0, freeVertex, result, exact, feetHeld);
+  if (result.status == Status::Cancelled) return result;
+  return {Status::TargetNotMet, "a minimum angle of " + degreesText(options.minAngle) +
+                                    " was not reached with half the Steiner budget; the mesh is "
+                                    "refined to " + degreesText(kSureMinAngle) +
+                                    (result.ok() ? "" : " (" + result.message + ")")};
 }
 
 }  // namespace acutemesh::detail

@@ -89,6 +89,12 @@ check "nonobtuse superior" run 0 --mode nonobtuse --stats --no-output "$shared/p
 check "nonobtuse certified" stdout_has '"obtuse": 0,'
 check "quality 25 degrees" run 0 --mode quality --min-angle 25 --stats --no-output "$work/A.poly"
 check "quality target met" stdout_has '"targetMet": true'
+# Beyond 40 degrees refinement may wander: it falls back to 40 and says so (exit 1).
+cp "$data/plate.poly" "$work/plate.poly"
+check "quality 44 degrees: exit 1" run 1 --mode quality --min-angle 44 --stats --no-output "$work/plate.poly"
+check "quality 44 degrees: says so" stderr_has "a minimum angle of 44 degrees was not reached"
+check "quality 44 degrees: meshed to 40" stderr_has "refined to 40 degrees"
+check "quality 44 degrees: no wandering" bash -c "grep -o '\"steiner\": [0-9]*' '$work/out' | awk '{exit !(\$2 < 1000)}'"
 check "budget ends early" run 1 --mode acute --max-steiner 5 --stats -o "$work/budget" "$work/A.poly"
 check "budget message" stderr_has "budget"
 check "budget still writes the best mesh" test -s "$work/budget.ele"

@@ -137,6 +137,39 @@ TEST(Refine, QualityReachesItsMinimumAngle) {
   }
 }
 
+// Beyond 40 degrees Delaunay refinement need not terminate: A.poly still reaches 42, the plate
+// and the airfoil wander there (their smallest angles sank to 12-17 degrees as 20,000 points
+// ran out), so after half the Steiner budget they are meshed to 40 degrees instead, and say so.
+TEST(Refine, MinAngleBeyondFortyIsBestEffortAndStable) {
+  Options o;
+  o.mode = Mode::Quality;
+  o.minAngle = 42;
+  Pslg a = load(kData + "/A.poly");
+  Result r = mesh(a, o);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+  EXPECT_GE(smallestAngle(r.mesh), 42 * (1 - 1e-12));
+  expectValid(a, o, r, "A.poly 42");
+  for (std::string name : {"plate.poly", "naca0012.poly"}) {
+    Pslg in = load(kData + "/" + name);
+    Options plain = o;
+    plain.minAngle = 40;
+    const Result at40 = mesh(in, plain);
+    for (double angle : {42.0, 46.0}) {
+      o.minAngle = angle;
+      r = mesh(in, o);
+      const std::string what = name + " " + std::to_string(angle);
+      EXPECT_EQ(r.status, Status::TargetNotMet) << what;
+      EXPECT_NE(r.message.find("refined to 40 degrees"), std::string::npos)
+          << what << ": " << r.message;
+      EXPECT_FALSE(r.stats.targetMet) << what;
+      // The mesh the 40 degree run makes, not a half-refined one.
+      EXPECT_EQ(r.mesh.points, at40.mesh.points) << what;
+      EXPECT_EQ(r.mesh.triangles, at40.mesh.triangles) << what;
+      expectValid(in, o, r, what);
+    }
+  }
+}
+
 TEST(Refine, BudgetsAndCancelReturnAValidBestMesh) {
   Pslg in = load(kShared + "/poly/superior.poly");
   Options o;
