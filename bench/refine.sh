@@ -10,7 +10,7 @@
 #     notes any that differ from the committed copies in bench/inputs/data/;
 #  4. per input: `build/acutemesh --mode cdt|acute|nonobtuse --stats --no-output INPUT` (text
 #     outlines with --fill nonzero), best of $REFINE_RUNS by the CLI's own seconds.total, and
-#     `--mode quality --min-angle A` once for A in 30, 35, 40; the unit square refined to an
+#     `--mode quality --min-angle A` once for A in 30, 35, 40, 42; the unit square refined to an
 #     area bound of 1e-6 (throughput, best of $REFINE_RUNS); per
 #     CG:SHOP instance: cdt, nonobtuse and acute once. Each run's stdout, stderr and exit
 #     status are kept in bench/work/refine/runs/;
@@ -30,7 +30,7 @@ RUNS="${REFINE_RUNS:-3}"
 TIME_LIMIT="${REFINE_TIME_LIMIT:-60}"
 CGSHOP_LIMIT="${CGSHOP_TIME_LIMIT:-10}"
 QUICK="${REFINE_QUICK:-0}"
-QUALITY_ANGLES="30 35 40"
+QUALITY_ANGLES="30 35 40 42"
 if [[ "$QUICK" == 1 ]]; then RUNS=1; fi
 FONT=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 SHARED=../shared/data

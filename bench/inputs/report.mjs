@@ -429,6 +429,8 @@ if (quality.length) {
       'Ruppert\'s circumcentres stop terminating near 34°; our runs insert the seed\'s locally optimal points and relocate free vertices.',
     '- Where an input angle is below the bound (Lake Superior: 12.2°), the triangles there cannot meet it: the run ends with them ' +
       'left ("not met", exit 1) once nothing else can be improved, or when the Steiner budget runs out.',
+    '- Above 40° the bound is best effort: a run that has used half the Steiner budget without reaching it (refinement that ' +
+      'no longer terminates wanders) is made again to 40° ("not met", exit 1, its min angle then just above 40°).',
     '',
   );
 }
