@@ -261,7 +261,9 @@ function show(am, pslg, input, options, m, wallMs) {
   const warnings = s.warnings && s.warnings.length ? `\n${s.warnings.slice(0, 3).join('\n')}` : '';
   const verdict = options.mode === 'acute' || options.mode === 'nonobtuse'
     ? (result.certified ? 'certified ' + (options.mode === 'acute' ? 'acute' : 'non-obtuse') : 'NOT certified: the budget ran out (the best mesh so far is shown)')
-    : options.mode === 'quality' ? (result.targetMet ? 'quality target met' : 'quality target not met') : 'constrained Delaunay';
+    : options.mode === 'quality'
+      ? (result.targetMet ? 'quality target met' : `quality target not met${m.message ? ` (${m.message})` : ''}`)
+      : 'constrained Delaunay';
   setStatus(`Done in ${Math.round(wallMs)} ms: ${verdict}.${warnings}`,
     (options.mode === 'acute' || options.mode === 'nonobtuse') && !result.certified ? 'warn' : '');
   // The first mesh on screen: when the frame that draws it has run.

@@ -129,6 +129,18 @@ test('the URL carries text and options: a shared link meshes the same', async ()
   await context.close();
 });
 
+test('quality beyond 40 degrees: the page says the bound was not reached and why', async () => {
+  const { page, errors, context } = await open('?text=Hi&mode=quality&minAngle=44');
+  const r = await result(page);
+  assert.equal(r.mode, 'quality');
+  assert.equal(r.targetMet, false);
+  const status = await page.textContent('#status');
+  assert.match(status, /quality target not met \(a minimum angle of 44 degrees was not reached/);
+  assert.match(status, /refined to 40 degrees/);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a file over the size limit is refused with a message; the page meshes on', async () => {
   const { page, errors, context } = await open('');
   const runs = await page.getAttribute('[data-testid=stats]', 'data-runs');
