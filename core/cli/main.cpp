@@ -31,7 +31,7 @@ options:
                        acute: refine until every angle < --max-angle (default 90)
                        nonobtuse: refine until every angle <= 90
                        quality: refine until every angle >= --min-angle (default 20;
-                       terminates up to about 40)
+                       terminates up to 40; above, falls back to 40 if it wanders)
   --max-angle DEG      acute mode's bound (exact at 90; 60 < DEG <= 90)
   --min-angle DEG      smallest angle wanted (quality; also with acute / nonobtuse)
   --max-area A         largest triangle area wanted (any refinement mode)

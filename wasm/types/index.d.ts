@@ -92,7 +92,7 @@ export interface MeshOptions {
   exactFeet?: boolean;
   /** Degrees; acute mode: every angle < maxAngle (60 < maxAngle <= 90; default 90, exact). */
   maxAngle?: number;
-  /** Degrees; smallest angle wanted (quality mode: default 20; 0 <= minAngle < 60, terminates up to about 40). */
+  /** Degrees; smallest angle wanted (quality mode: default 20; 0 <= minAngle < 60; terminates up to 40, and above 40 a run that wanders is meshed to 40 instead, status 'target-not-met'). */
   minAngle?: number;
   /** Largest triangle area wanted (0: none). */
   maxArea?: number;
@@ -174,8 +174,10 @@ export interface MeshResult {
   exactPoints: ExactPoint[];
   stats: MeshStats;
   /**
-   * 'target-not-met': a budget (maxSteiner, timeLimit) ended first, or an angle bound below 90
-   * could not be reached. Not an error: the best mesh so far, with stats.targetMet false.
+   * 'target-not-met': a budget (maxSteiner, timeLimit) ended first, an angle bound below 90 or
+   * a minimum angle above 40 could not be reached (the mesh is then acute, or refined to 40), or
+   * input angles below the minimum angle stay. Not an error: the best mesh so far, with
+   * stats.targetMet false.
    */
   status: 'ok' | 'target-not-met';
   /** Empty when status is 'ok'; otherwise why. */
