@@ -180,7 +180,8 @@ double domainArea(const Triangulation& T, const Options& options) {
   if (options.maxArea > 0)
     for (uint32_t t = 0; t < T.triangleSlots(); ++t)
       if (T.inDomain(t))
-        area += 0.5 * orient2d(T.point(T.tri[3 * t]), T.point(T.tri[3 * t + 1]), T.point(T.tri[3 * t + 2]));
+        area += 0.5 * orient2d(T.point(T.tri[3 * t]), T.point(T.tri[3 * t + 1]),
+                               T.point(T.tri[3 * t + 2]));
   return area;
 }
 
@@ -192,6 +193,13 @@ double steinerBudget(const Pslg& input, const Options& options, double area) {
   double cap = std::max(20000.0, 50.0 * double(input.vertexCount()));
   return options.maxArea > 0 ? cap + 4 * area / options.maxArea : cap;
 }
+
+#ifdef ACUTEMESH_STRATEGY_THREADS
+// The threads a run may use: Options::threads, 0 meaning one per hardware thread.
+unsigned threadsFor(const Options& options) {
+  return options.threads ? options.threads : std::thread::hardware_concurrency();
+}
+#endif
 
 struct SteinerGate {
   std::atomic<uint32_t> limit{0};
@@ -402,6 +410,7 @@ class Refiner {
   // One merge pass (see mergeSteinerPoints); with `mine`, only pairs of vertices it marks (or
   // made after it), each success logged as {u, w, the point made} if `log` is given.
   uint32_t mergePass(const std::vector<uint8_t>* mine, std::vector<std::array<uint32_t, 3>>* log);
+  bool mergePair(uint32_t u, uint32_t w);
   void mergeInHalves();
   bool improvementShouldStop();
   uint32_t attempts_ = 0;  // removal and merge attempts so far (improvementShouldStop)
@@ -1992,17 +2001,25 @@ uint32_t Refiner::mergePass(const std::vector<uint8_t>* mine,
     } while (e != e0);
     std::vector<uint32_t> list = partners;  // ring_ is reused by the repairs
     for (uint32_t w : list) {
-      if (T_.vertexEdge[u] == kNone || T_.vertexEdge[w] == kNone || T_.findEdge(u, w) == kNone)
-        continue;
-      if (onSegment ? tryMergeOnSegment(u, w) : tryMerge(u, w)) {
+      if (mergePair(u, w)) {
         ++merged;
-        markChanged();
         if (log) log->push_back({u, w, T_.vertexCount() - 1});
         break;
       }
     }
   }
   return merged;
+}
+
+// Neighbours u and w (both free, or both on one segment) made one point if tryMerge (or
+// tryMergeOnSegment) can, the stars that changed marked (markChanged); the point is the last
+// vertex then. False, changing nothing, where either is gone or they are no longer neighbours.
+bool Refiner::mergePair(uint32_t u, uint32_t w) {
+  if (T_.vertexEdge[u] == kNone || T_.vertexEdge[w] == kNone || T_.findEdge(u, w) == kNone)
+    return false;
+  if (!(role_[u] == kOnSegment ? tryMergeOnSegment(u, w) : tryMerge(u, w))) return false;
+  markChanged();
+  return true;
 }
 
 // The first merge pass of a large mesh, in two halves at once: the Steiner vertices left and
@@ -2048,9 +2065,7 @@ void Refiner::mergeInHalves() {
   std::vector<std::array<uint32_t, 3>> log;
   auto right = [&] { other.mergePass(&mine[1], &log); };
 #ifdef ACUTEMESH_STRATEGY_THREADS
-  const unsigned threads =
-      options_.threads ? options_.threads : std::thread::hardware_concurrency();
-  if (threads > 1) {
+  if (threadsFor(options_) > 1) {
     std::thread helper(right);
     mergePass(&mine[0], nullptr);
     helper.join();
@@ -2067,13 +2082,8 @@ void Refiner::mergeInHalves() {
   for (uint32_t v = 0; v < n; ++v) here[v] = v;
   for (const auto& [u, w, made] : log) {
     const uint32_t a = here[u], b = here[w];
-    if (a == kNone || b == kNone || T_.vertexEdge[a] == kNone || T_.vertexEdge[b] == kNone ||
-        T_.findEdge(a, b) == kNone || role_[a] != role_[b])
-      continue;
-    if (role_[a] == kOnSegment ? tryMergeOnSegment(a, b) : tryMerge(a, b)) {
-      markChanged();
+    if (a != kNone && b != kNone && role_[a] == role_[b] && mergePair(a, b))
       here[made] = T_.vertexCount() - 1;
-    }
   }
   // Due in the next pass: what no half tried (the vertices along the middle), what a change
   // touched, on either side.
@@ -2372,7 +2382,7 @@ bool refineWithStrategies(Triangulation& T, const Pslg& input, const Options& op
   // The strategies before the fallbacks concurrently, where there are threads to spare.
   size_t leading = 0;
   while (leading < strategies.size() && !strategies[leading].fallback) ++leading;
-  unsigned threads = options.threads ? options.threads : std::thread::hardware_concurrency();
+  const unsigned threads = threadsFor(options);
   if (threads > 1 && leading > 1) {
     ConcurrentStrategies(T, input, options, budget, strategies, leading, choice)
         .run(std::min<size_t>(threads, leading));
