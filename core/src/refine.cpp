@@ -1587,16 +1587,16 @@ StepResult Refiner::runSteps() {
 
 // Rounds of smoothing, removal and merging on a mesh that meets the target, while a round
 // takes out at least kPolishGain of the Steiner points (CG:SHOP non-obtuse: 72,554 points
-// without polishing, 56,156 with). A mesh of fewer than kPolishAllRoundsBelow Steiner points
-// has all twelve rounds: a round that gains nothing still smooths, which lets later rounds
-// gain again (stopping at the first round that gains nothing saves nothing), and on a small
-// mesh a round takes a few milliseconds. CG:SHOP non-obtuse 13,361 -> 13,154 Steiner points
-// (the slowest instance, over 400 points, unchanged), acute 54,030 -> 53,800 (its instances of
-// 200-400 points taking at most 79 ms instead of 55); Lake Superior acute 228 -> 226 in twice
-// the time (30 -> 60 ms). A round that ends short of the target (a budget ran out) or with
-// more points than it started with is undone.
+// without polishing, 56,156 with). On a mesh of fewer than kSmallPolish Steiner points, where a
+// round takes a few milliseconds, rounds go on until two in a row take out none: a round that
+// gains nothing still smooths, which lets the next ones gain again (CG:SHOP non-obtuse 13,361
+// -> 13,235 Steiner points, acute 54,030 -> 53,888, the slowest instances, all larger,
+// unchanged; until one round gains nothing: no fewer points; all twelve rounds: 13,154 and
+// 53,800, but a 230-point instance then took 80-100 ms instead of 50-65, and Lake Superior
+// acute twice the time for 2 points). A round that ends short of the target (a budget ran out)
+// or with more points than it started with is undone.
 constexpr double kPolishGain = 0.005;
-constexpr size_t kPolishAllRoundsBelow = 400;
+constexpr size_t kSmallPolish = 400;
 // Meshes with at least this many Steiner points merge in two halves (mergeInHalves).
 constexpr size_t kMergeInHalvesFrom = 1000;
 // A pair whose joint link has this many edges or more is not tried for a merge unless one
@@ -1609,6 +1609,7 @@ constexpr size_t kMergeLinkEdges = 11;
 
 void Refiner::polish() {
   if (!(acute_ || nonObtuse_) || anyBad()) return;
+  int idleRounds = 0;  // in a row, up to the last
   for (int round = 0; round < 12 && !budget_.stop(); ++round) {
     size_t before = liveSteiner();
     Triangulation saved = T_;
@@ -1633,8 +1634,9 @@ void Refiner::polish() {
       footOf_.resize(role_.size(), kNone);
       return;
     }
-    if (after >= kPolishAllRoundsBelow && double(before - after) < kPolishGain * double(before))
-      return;
+    idleRounds = after == before ? idleRounds + 1 : 0;
+    const bool small = after < kSmallPolish;
+    if (small ? idleRounds == 2 : double(before - after) < kPolishGain * double(before)) return;
   }
 }
 
