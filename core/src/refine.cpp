@@ -1609,7 +1609,7 @@ constexpr size_t kMergeLinkEdges = 11;
 
 void Refiner::polish() {
   if (!(acute_ || nonObtuse_) || anyBad()) return;
-  int idleRounds = 0;  // in a row, up to the last
+  int idleRounds = 0;  // the last rounds in a row that took out no point
   for (int round = 0; round < 12 && !budget_.stop(); ++round) {
     size_t before = liveSteiner();
     Triangulation saved = T_;
@@ -1874,7 +1874,7 @@ int Refiner::tryMergedPoint(const double* x) {
 // refinement would weigh best for the first bad triangle of their hole (its candidates' fewest
 // bad triangles left, see insertSparingSegments; CG:SHOP non-obtuse 33,313 -> 32,945 Steiner
 // points, acute 58,599 -> 58,109, in about a tenth more time; the two best: 32,728 and 57,924
-// in a third more). Otherwise the pair goes back.
+// in a third more). Otherwise the pair goes back. A pair mergePoint declines is not tried.
 bool Refiner::tryMerge(uint32_t u, uint32_t w) {
   double mid[2];
   if (!mergePoint(u, w, mid)) return false;
