@@ -171,9 +171,6 @@ struct Strategy {
   bool fallback = false;  // run only if no strategy before it met the target
 };
 
-// A run's Steiner limit where strategies run concurrently (refineWithStrategies): it may
-// tighten while the run goes on, so the run reads it at every check, and publishes the vertex
-// count it checked.
 // The domain's area where an area bound needs it (0 otherwise).
 double domainArea(const Triangulation& T, const Options& options) {
   double area = 0;
@@ -201,6 +198,9 @@ unsigned threadsFor(const Options& options) {
 }
 #endif
 
+// A run's Steiner limit where strategies run concurrently (refineWithStrategies): it may
+// tighten while the run goes on, so the run reads it at every check, and publishes the vertex
+// count it checked.
 struct SteinerGate {
   std::atomic<uint32_t> limit{0};
   std::atomic<uint32_t> checked{0};
