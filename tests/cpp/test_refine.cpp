@@ -276,6 +276,31 @@ void expectEveryCgshopInstanceSolved(Mode mode) {
 TEST(Refine, EveryCgshopInstanceNonObtuse) { expectEveryCgshopInstanceSolved(Mode::NonObtuse); }
 TEST(Refine, EveryCgshopInstanceAcute) { expectEveryCgshopInstanceSolved(Mode::Acute); }
 
+// Wide fans at small corners (Strategy::wideFans): simple-polygon-exterior_10_74050e4d has a
+// 0.18-degree wedge 7,300 units long between a constraint and the boundary, next to a 6-degree
+// corner 200 units away. The usual fans (radius 98 at both) leave 1,862 Steiner points, 692 of
+// them along the wedge; with the tiny corner's fan taking most of the room between the two,
+// 1,423 (turned a quarter, where rounding differs: 1,805 and 1,612).
+TEST(Refine, WideFansAtTinyCorners) {
+  Pslg in = load(std::string(kShared) + "/cgshop2025/simple-polygon-exterior_10_74050e4d.instance.json");
+  for (bool turned : {false, true}) {
+    Pslg input = in;
+    if (turned)
+      for (size_t v = 0; v < input.vertexCount(); ++v) {
+        const double x = input.points[2 * v], y = input.points[2 * v + 1];
+        input.points[2 * v] = -y, input.points[2 * v + 1] = x;
+      }
+    Options o;
+    o.mode = Mode::Acute;
+    o.exactSegments = true;
+    Result r = mesh(input, o);
+    const std::string what = turned ? "turned" : "as given";
+    expectValid(input, o, r, what);
+    EXPECT_TRUE(r.stats.certified) << what;
+    EXPECT_LT(r.stats.steiner, 1700u) << what;
+  }
+}
+
 // Found with the bench's random points: with no segments, the hull edges were no boundary
 // for the refinement, so circumcentres outside the hull left obtuse triangles behind.
 TEST(Refine, PointSetsAreRefinedUpToTheirHull) {
@@ -382,6 +407,8 @@ TEST(Refine, ThreadsMakeTheSameMesh) {
       {cgshop + "point-set_150_1fb326cf.instance.json", Mode::NonObtuse, 90, 0},
       // A Steiner budget that stops every strategy short.
       {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::Acute, 90, 300},
+      // Wide fans fall short; the usual fans, run after all the strategies with wide ones, do not.
+      {cgshop + "simple-polygon-exterior-20_40_317d3f6d.instance.json", Mode::Acute, 90, 0},
   };
   for (const Case& c : cases) {
     Pslg in = load(c.path);
