@@ -821,12 +821,16 @@ constexpr double kWideFan = 0.8, kFanGap = 0.98, kYieldRatio = 4, kYield = 0.2;
 void Refiner::widenFans(std::vector<FanCentre>& centres) const {
   std::vector<size_t> order(centres.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t i, size_t j) { return centres[i].sector < centres[j].sector; });
+  // (std::sort with the index as the tie-break, not std::stable_sort, whose temporary buffer
+  // trips AddressSanitizer with libstdc++ 12: see validate.cpp.)
+  std::sort(order.begin(), order.end(), [&](size_t i, size_t j) {
+    return centres[i].sector != centres[j].sector ? centres[i].sector < centres[j].sector : i < j;
+  });
   // The centres by x, so that each looks only at those within reach of its widest fan.
   std::vector<size_t> byX = order;
   auto x = [&](size_t i) { return P(centres[i].vertex)[0]; };
-  std::stable_sort(byX.begin(), byX.end(), [&](size_t i, size_t j) { return x(i) < x(j); });
+  std::sort(byX.begin(), byX.end(),
+            [&](size_t i, size_t j) { return x(i) != x(j) ? x(i) < x(j) : i < j; });
   double largest = 0;
   for (const FanCentre& c : centres) largest = std::max(largest, c.radius);
   largest *= kWideFan / kFanFactor;
