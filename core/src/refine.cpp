@@ -321,6 +321,7 @@ class Refiner {
     uint32_t vertex;
     double radius;
     double sector;  // its smallest domain sector (radians)
+    double widest;  // kWideFan times the distance to its link (set by widenFans)
   };
   double smallestSector() const;
   void widenFans(std::vector<FanCentre>& centres) const;
@@ -791,7 +792,7 @@ void Refiner::buildCornerFans() {
   std::vector<FanCentre> centres;
   for (uint32_t v = 0; v < fanRadius_.size(); ++v)
     if (double r = fanRadius(v, strategy_.lazyFans))
-      centres.push_back({v, r, smallestSector()});  // (the star fanRadius read)
+      centres.push_back({v, r, smallestSector(), 0});  // (the star fanRadius read)
   if (strategy_.wideFans) widenFans(centres);
   for (const FanCentre& c : centres) buildFan(c.vertex, c.radius);
 }
@@ -827,17 +828,21 @@ void Refiner::widenFans(std::vector<FanCentre>& centres) const {
     return centres[i].sector != centres[j].sector ? centres[i].sector < centres[j].sector : i < j;
   });
   // The centres by x, so that each looks only at those within reach of its widest fan.
-  std::vector<size_t> byX = order;
+  std::vector<size_t> byX(centres.size());
+  for (size_t i = 0; i < byX.size(); ++i) byX[i] = i;
   auto x = [&](size_t i) { return P(centres[i].vertex)[0]; };
   std::sort(byX.begin(), byX.end(),
             [&](size_t i, size_t j) { return x(i) != x(j) ? x(i) < x(j) : i < j; });
+  // Each fan's widest from its link (its radius, before any neighbour shrinks it).
   double largest = 0;
-  for (const FanCentre& c : centres) largest = std::max(largest, c.radius);
-  largest *= kWideFan / kFanFactor;
+  for (FanCentre& c : centres) {
+    c.widest = kWideFan / kFanFactor * c.radius;
+    largest = std::max(largest, c.widest);
+  }
   std::vector<uint8_t> settled(centres.size(), 0);
   for (size_t i : order) {
     FanCentre& c = centres[i];
-    const double reach = (kWideFan / kFanFactor * c.radius + largest) / kFanGap;
+    const double reach = (c.widest + largest) / kFanGap;
     auto near = [&](auto visit) {
       auto first = std::lower_bound(byX.begin(), byX.end(), x(i) - reach,
                                     [&](size_t j, double value) { return x(j) < value; });
@@ -845,7 +850,7 @@ void Refiner::widenFans(std::vector<FanCentre>& centres) const {
         if (*it != i)
           visit(centres[*it], settled[*it], std::sqrt(dist2(P(c.vertex), P(centres[*it].vertex))));
     };
-    double radius = kWideFan / kFanFactor * c.radius;
+    double radius = c.widest;
     near([&](const FanCentre& other, bool otherSettled, double d) {
       const bool yields = !otherSettled && other.sector > kYieldRatio * c.sector;
       radius = std::min(radius, kFanGap * d - (yields ? kYield : 1) * other.radius);
