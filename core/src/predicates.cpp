@@ -437,6 +437,23 @@ double incircle(const double* a, const double* b, const double* c, const double*
   return incircleAdapt(a, b, c, d, permanent);
 }
 
+void cornerDots(const double* p0, const double* p1, const double* p2, double out[3]) {
+  // The differences each corner's dot2d would take, shared: p1 - p0, p2 - p0, p2 - p1 (the
+  // others are their exact negatives, so every product and sum is the one dot2d rounds).
+  const double ux = p1[0] - p0[0], uy = p1[1] - p0[1];
+  const double vx = p2[0] - p0[0], vy = p2[1] - p0[1];
+  const double wx = p2[0] - p1[0], wy = p2[1] - p1[1];
+  const double px[3] = {ux * vx, -(wx * ux), vx * wx};
+  const double py[3] = {uy * vy, -(wy * uy), vy * wy};
+  const double* const p[3] = {p0, p1, p2};
+  for (int k = 0; k < 3; ++k) {
+    const double det = px[k] + py[k];
+    out[k] = absval(det) >= kCcwErrBoundA * (absval(px[k]) + absval(py[k]))
+                 ? det
+                 : dot2dExact(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+  }
+}
+
 double dot2d(const double* a, const double* b, const double* c) {
   const double px = (b[0] - a[0]) * (c[0] - a[0]);
   const double py = (b[1] - a[1]) * (c[1] - a[1]);

@@ -1,5 +1,5 @@
-// Exact predicates (orient2d, incircle, dot2d) checked against a slow big-integer reference
-// (exact_reference.h) on random, near-degenerate and exactly degenerate inputs.
+// Exact predicates (orient2d, incircle, dot2d and cornerDots) checked against a slow big-integer
+// reference (exact_reference.h) on random, near-degenerate and exactly degenerate inputs.
 
 #include <gtest/gtest.h>
 
@@ -84,6 +84,15 @@ struct Checker {
       fail("dot2d" + fmt(a) + fmt(b) + fmt(c) + " got " + std::to_string(got) + " want " +
            std::to_string(want) + (mustBeZero ? " (must be 0)" : ""));
     }
+    // cornerDots gives the same sign with the corner in each of its three places.
+    double d[3][3];
+    acutemesh::cornerDots(a.data(), b.data(), c.data(), d[0]);
+    acutemesh::cornerDots(c.data(), a.data(), b.data(), d[1]);
+    acutemesh::cornerDots(b.data(), c.data(), a.data(), d[2]);
+    for (int k = 0; k < 3; ++k)
+      if (sign(d[k][k]) != want)
+        fail("cornerDots" + fmt(a) + fmt(b) + fmt(c) + " corner " + std::to_string(k) + " got " +
+             std::to_string(sign(d[k][k])) + " want " + std::to_string(want));
     return got;
   }
 };

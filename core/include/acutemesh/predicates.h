@@ -18,6 +18,10 @@ double incircle(const double* a, const double* b, const double* c, const double*
 // 0 iff it is exactly right.
 double dot2d(const double* a, const double* b, const double* c);
 
+// dot2d at each corner of triangle p0, p1, p2 at once: out[k] has the sign of
+// dot2d(p[k], p[k + 1], p[k + 2]) (indices mod 3), and its value where the filter decides.
+void cornerDots(const double* p0, const double* p1, const double* p2, double out[3]);
+
 inline int sign(double v) { return (v > 0) - (v < 0); }
 
 // Exact sign helpers: -1, 0 or +1, with exactly the meaning of the predicate they wrap.
