@@ -414,13 +414,27 @@ class Refiner {
     double x, y;
   };
   std::vector<Moved> moved_;
-  void removeSteinerPoints();
-  void mergeSteinerPoints();
-  // One merge pass (see mergeSteinerPoints); with `mine`, only pairs of vertices it marks (or
-  // made after it), each success logged as {u, w, the point made} if `log` is given.
-  uint32_t mergePass(const std::vector<uint8_t>* mine, std::vector<std::array<uint32_t, 3>>* log);
+  // Passes of removals (merges) until one gains nothing, at most `passes`; the first tries
+  // the vertices `due` marks (default: all).
+  void removeSteinerPoints(const std::vector<uint8_t>* due = nullptr, int passes = 12);
+  void mergeSteinerPoints(const std::vector<uint8_t>* due = nullptr, int passes = 2);
+  uint32_t mergePass();
   bool mergePair(uint32_t u, uint32_t w);
-  void mergeInHalves();
+  // One improvement round (polish), and one done in two halves at once (roundInHalves): each
+  // half's round works only on the vertices mine_ marks, and one half's steps are logged
+  // (log_) to be made again on the mesh (replay, replayMove).
+  struct Step {
+    enum Kind : uint8_t { Move, Remove, Merge } kind;
+    uint32_t u, w, made;  // the vertex moved or removed; the pair merged and the point made
+    double x, y;          // where it moved
+  };
+  void polishRound();
+  void roundInHalves(int round);
+  void replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t made);
+  bool replayMove(uint32_t v, const double* to);
+  bool owned(uint32_t v) const { return !mine_ || v >= mine_->size() || (*mine_)[v]; }
+  const std::vector<uint8_t>* mine_ = nullptr;
+  std::vector<Step>* log_ = nullptr;
   bool improvementShouldStop();
   uint32_t attempts_ = 0;  // removal and merge attempts so far (improvementShouldStop)
   void smooth();
@@ -1674,8 +1688,9 @@ StepResult Refiner::runSteps() {
 // or with more points than it started with is undone.
 constexpr double kPolishGain = 0.005;
 constexpr size_t kSmallPolish = 400;
-// Meshes with at least this many Steiner points merge in two halves (mergeInHalves).
-constexpr size_t kMergeInHalvesFrom = 1000;
+// Meshes with at least this many Steiner points have their improvement rounds in two halves at
+// once (roundInHalves).
+constexpr size_t kRoundInHalvesFrom = 700;
 // A pair whose joint link has this many edges or more is not tried for a merge unless one
 // point could stand in for both without moving its neighbours (mergePoint): such tries
 // succeeded once in 240 on the 12 slowest CG:SHOP acute instances (the rest once in 36) and
@@ -1691,17 +1706,10 @@ void Refiner::polish() {
     size_t before = liveSteiner();
     Triangulation saved = T_;
     std::vector<uint8_t> savedRoles = role_;
-    // Smoothing makes the room removals and merges need: twice first (a sweep moves each
-    // vertex against its neighbours' old places; the second settles most of that), once more
-    // after the removals. Against one sweep a round: CG:SHOP acute 54,476 -> 54,030 Steiner
-    // points (with kMergeLinkEdges) in 12% less time on its 25 slowest instances (more merges
-    // succeed), non-obtuse 13,455 -> 13,361 in about the same time; a sweep costs about a
-    // twentieth of a round.
-    smooth();
-    smooth();
-    removeSteinerPoints();
-    smooth();
-    mergeSteinerPoints();
+    if (liveSteiner() >= kRoundInHalvesFrom)
+      roundInHalves(round);
+    else
+      polishRound();
     StepResult result = repairAll();
     size_t after = liveSteiner();
     if (!result.ok() || anyBad() || after > before) {
@@ -1715,6 +1723,20 @@ void Refiner::polish() {
     const bool small = after < kSmallPolish;
     if (small ? idleRounds == 2 : double(before - after) < kPolishGain * double(before)) return;
   }
+}
+
+// Smoothing makes the room removals and merges need: twice first (a sweep moves each vertex
+// against its neighbours' old places; the second settles most of that), once more after the
+// removals. Against one sweep a round: CG:SHOP acute 54,476 -> 54,030 Steiner points (with
+// kMergeLinkEdges) in 12% less time on its 25 slowest instances (more merges succeed),
+// non-obtuse 13,455 -> 13,361 in about the same time; a sweep costs about a twentieth of a
+// round.
+void Refiner::polishRound() {
+  smooth();
+  smooth();
+  removeSteinerPoints();
+  smooth();
+  mergeSteinerPoints();
 }
 
 // The gain of repairing t (whose worst corner is c) for the FewestBadFirst order: the bad
@@ -2035,51 +2057,53 @@ size_t Refiner::liveSteiner() const {
 // neighbours go in the next removal pass.
 void Refiner::smooth() {
   for (uint32_t v = uint32_t(input_.vertexCount()); v < T_.vertexCount(); ++v) {
-    if (T_.vertexEdge[v] == kNone || (role_[v] != kFree && role_[v] != kOnSegment)) continue;
-    if (relocate(v) || (!strictMax_ && slide(v))) legalizeStar(v);
+    if (T_.vertexEdge[v] == kNone || (role_[v] != kFree && role_[v] != kOnSegment) || !owned(v))
+      continue;
+    if (relocate(v) || (!strictMax_ && slide(v))) {
+      legalizeStar(v);
+      if (log_) log_->push_back({Step::Move, v, kNone, kNone, P(v)[0], P(v)[1]});
+    }
   }
 }
 
 // The improvement pass (once the target is met): every Steiner point whose removal keeps
 // every triangle on target goes, oldest first, until a pass removes none.
-void Refiner::removeSteinerPoints() {
+void Refiner::removeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
   if (anyBad()) return;
   // The first pass tries every Steiner point; later ones only those whose surroundings a
   // removal has changed since their last try (the rest would fail the same way again).
   dirty_.assign(T_.vertexCount(), 1);
-  for (int pass = 0; pass < 12; ++pass) {
+  if (due) std::copy(due->begin(), due->end(), dirty_.begin());
+  for (int pass = 0; pass < passes; ++pass) {
     uint32_t removed = 0;
     // Oldest first: the early, coarse points are the likeliest to have become redundant
     // (fewer points than newest first: A 92 vs 97, Superior 299 vs 311).
     for (uint32_t v = 0, count = T_.vertexCount(); v < count; ++v) {
-      if (!dirty_[v] || T_.vertexEdge[v] == kNone) continue;
+      if (!dirty_[v] || T_.vertexEdge[v] == kNone || !owned(v)) continue;
       dirty_[v] = 0;
       if (improvementShouldStop()) return;
       bool gone = role_[v] == kFree ? tryRemove(v) : role_[v] == kOnSegment && tryRemoveFromSegment(v);
-      if (gone) ++removed, markChanged();
+      if (!gone) continue;
+      ++removed, markChanged();
+      if (log_) log_->push_back({Step::Remove, v, kNone, kNone, 0, 0});
     }
     if (removed == 0) break;
   }
 }
 
 // Pairs of neighbouring Steiner points that one point can stand in for.
-void Refiner::mergeSteinerPoints() {
+void Refiner::mergeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
   if (anyBad()) return;
   dirty_.assign(T_.vertexCount(), 1);
+  if (due) std::copy(due->begin(), due->end(), dirty_.begin());
   // Two passes a call: polish() calls it round after round (four a call: CG:SHOP 15% slower,
-  // no fewer points). On a large mesh the first is split between two halves.
-  for (int pass = 0; pass < 2; ++pass) {
-    if (pass == 0 && liveSteiner() >= kMergeInHalvesFrom) {
-      mergeInHalves();
-      continue;
-    }
-    if (mergePass(nullptr, nullptr) == 0 || budget_.stop()) break;
-  }
+  // no fewer points).
+  for (int pass = 0; pass < passes; ++pass)
+    if (mergePass() == 0 || budget_.stop()) break;
 }
 
-uint32_t Refiner::mergePass(const std::vector<uint8_t>* mine,
-                            std::vector<std::array<uint32_t, 3>>* log) {
-  auto owned = [&](uint32_t v) { return !mine || v >= mine->size() || (*mine)[v]; };
+// Tries each due Steiner vertex (of mine_) with its partners, the same pair once.
+uint32_t Refiner::mergePass() {
   uint32_t merged = 0;
   std::vector<uint8_t> pending = dirty_;  // a pair is tried once a pass: at the turn of the
                                           // higher index, if due
@@ -2107,7 +2131,7 @@ uint32_t Refiner::mergePass(const std::vector<uint8_t>* mine,
     for (uint32_t w : list) {
       if (mergePair(u, w)) {
         ++merged;
-        if (log) log->push_back({u, w, T_.vertexCount() - 1});
+        if (log_) log_->push_back({Step::Merge, u, w, T_.vertexCount() - 1, 0, 0});
         break;
       }
     }
@@ -2126,37 +2150,44 @@ bool Refiner::mergePair(uint32_t u, uint32_t w) {
   return true;
 }
 
-// The first merge pass of a large mesh, in two halves at once: the Steiner vertices left and
-// right of their median x (those with a neighbour across it excepted) are tried, the left ones
-// here and the right ones on a copy of the triangulation, on a second thread where there is
-// one (the same steps either way, so every build and thread count makes the same mesh). The
-// right half's merges are then made again here in order, each as tryMerge decides afresh (so
-// a change the left half made near the middle is seen), which costs little: one attempt in
-// 50 to 100 succeeds. The next pass tries the vertices along the middle and around every
-// change. (Merging is 80% of the improvement rounds' time. On 2 threads the 25 slowest CG:SHOP
-// acute instances take 10% less in all and the slowest 0.22-0.26 s instead of 0.32-0.34 s;
-// CG:SHOP acute 54,427 -> 54,476 Steiner points; no non-obtuse instance is this large.)
-void Refiner::mergeInHalves() {
+// An improvement round in two halves at once (polish, on a mesh of kRoundInHalvesFrom Steiner
+// points or more): the Steiner vertices on either side of their median x (y in odd rounds),
+// those with a neighbour across it excepted, are smoothed, removed and merged as in a round of
+// their own, one half here and the other on a copy of the triangulation, on a second thread
+// where there is one (the same steps either way, so every build and thread count makes the
+// same mesh). The copy's steps are then made again here in order (replay), each checked anew,
+// and the vertices along the middle, with the points the merges made, get one removal and one
+// merge pass. On 2 threads the 25 slowest CG:SHOP acute instances take 12% less wall time (the
+// halves take about half a round each; the replay and the middle a tenth to a fifth of it);
+// CG:SHOP acute 47,429 -> 47,393 Steiner points, non-obtuse unchanged (from 500 points: 47,365,
+// but non-obtuse 13,235 -> 13,268). Tried: only the first merge pass of each round in halves
+// (from 1,000 points, before this): half the gain; without the middle's passes 47,759; the
+// middle's passes in full (removals until none, two merge passes) 47,420, but they took as
+// long as the halves in the first round.
+void Refiner::roundInHalves(int round) {
+  const int axis = round % 2;
   const uint32_t n = T_.vertexCount();
-  std::vector<double> xs;
+  std::vector<double> at;
   for (uint32_t v = uint32_t(input_.vertexCount()); v < n; ++v)
     if (T_.vertexEdge[v] != kNone && (role_[v] == kFree || role_[v] == kOnSegment))
-      xs.push_back(P(v)[0]);
-  if (xs.empty()) return;
-  std::nth_element(xs.begin(), xs.begin() + xs.size() / 2, xs.end());
-  const double middle = xs[xs.size() / 2];
+      at.push_back(P(v)[axis]);
+  if (at.empty()) return;
+  std::nth_element(at.begin(), at.begin() + at.size() / 2, at.end());
+  const double middle = at[at.size() / 2];
   std::vector<uint8_t> mine[2] = {std::vector<uint8_t>(n, 0), std::vector<uint8_t>(n, 0)};
+  std::vector<uint8_t> along(n, 0);  // the vertices with a neighbour across the middle
   for (uint32_t v = 0; v < n; ++v) {
     if (T_.vertexEdge[v] == kNone) continue;
-    const bool right = P(v)[0] >= middle;
+    const bool second = P(v)[axis] >= middle;
     bool across = false;
     uint32_t e0 = T_.vertexEdge[v], e = e0;
     do {
       uint32_t w = T_.tri[next(e)];
-      across |= w != kGhost && (P(w)[0] >= middle) != right;
+      across |= w != kGhost && (P(w)[axis] >= middle) != second;
       e = T_.opp[prev(e)];
     } while (e != e0);
-    mine[right][v] = !across;
+    mine[second][v] = !across;
+    along[v] = across;
   }
   Triangulation copy = T_;
   Refiner other(copy, input_, options_, budget_, strategy_, 0);
@@ -2164,35 +2195,79 @@ void Refiner::mergeInHalves() {
   other.fanCenter_ = fanCenter_;
   other.footOf_ = footOf_;
   other.fanRadius_ = fanRadius_;
-  other.dirty_ = dirty_;
   other.reportProgress_ = false;
-  std::vector<std::array<uint32_t, 3>> log;
-  auto right = [&] { other.mergePass(&mine[1], &log); };
+  std::vector<Step> log;
+  other.mine_ = &mine[1];
+  other.log_ = &log;
+  mine_ = &mine[0];
+  auto secondHalf = [&] { other.polishRound(); };
 #ifdef ACUTEMESH_STRATEGY_THREADS
   if (threadsFor(options_) > 1) {
-    std::thread helper(right);
-    mergePass(&mine[0], nullptr);
+    std::thread helper(secondHalf);
+    polishRound();
     helper.join();
   } else {
-    mergePass(&mine[0], nullptr);
-    right();
+    polishRound();
+    secondHalf();
   }
 #else
-  mergePass(&mine[0], nullptr);
-  right();
+  polishRound();
+  secondHalf();
 #endif
-  // The right half's merges again, here; its new points map to the ones made here.
-  std::vector<uint32_t> here(other.T_.vertexCount(), kNone);
-  for (uint32_t v = 0; v < n; ++v) here[v] = v;
-  for (const auto& [u, w, made] : log) {
-    const uint32_t a = here[u], b = here[w];
-    if (a != kNone && b != kNone && role_[a] == role_[b] && mergePair(a, b))
-      here[made] = T_.vertexCount() - 1;
+  mine_ = nullptr;
+  replay(log, n, other.T_.vertexCount());
+  along.resize(T_.vertexCount(), 1);  // and the points the merges made
+  removeSteinerPoints(&along, 1);
+  mergeSteinerPoints(&along, 1);
+}
+
+// The copy's steps (roundInHalves) made again here, in order: a move if the vertex's star
+// still meets the target there (replayMove), a removal or merge if tryRemove or tryMerge (or
+// their segment forms) decide so now. The copy's points from firstNew on (up to made) map to
+// those made here. (A step near the middle may fail where the other half changed things.)
+void Refiner::replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t made) {
+  std::vector<uint32_t> here(made, kNone);
+  for (uint32_t v = 0; v < firstNew; ++v) here[v] = v;
+  for (const Step& step : log) {
+    const uint32_t a = here[step.u];
+    if (a == kNone || T_.vertexEdge[a] == kNone) continue;
+    if (step.kind == Step::Move) {
+      const double to[2] = {step.x, step.y};
+      replayMove(a, to);
+    } else if (step.kind == Step::Remove) {
+      if (role_[a] == kFree ? tryRemove(a) : role_[a] == kOnSegment && tryRemoveFromSegment(a))
+        markChanged();
+    } else {
+      const uint32_t b = here[step.w];
+      if (b != kNone && role_[a] == role_[b] && mergePair(a, b)) here[step.made] = T_.vertexCount() - 1;
+    }
   }
-  // Due in the next pass: what no half tried (the vertices along the middle), what a change
-  // touched, on either side.
-  for (uint32_t v = 0; v < n; ++v)
-    if (mine[1][v]) dirty_[v] = other.dirty_[v];
+}
+
+// Moves Steiner vertex v to `to` (where smoothing moved it on the copy: on its segment's line
+// for a segment vertex) and legalizes its star if the star then meets the target, with the
+// checks relocate() and slide() make; else v stays.
+bool Refiner::replayMove(uint32_t v, const double* to) {
+  if (role_[v] != kFree && role_[v] != kOnSegment) return false;
+  const bool onSegment = role_[v] == kOnSegment;
+  uint32_t e0 = T_.vertexEdge[v], e = e0, spokes = 0;
+  ring_.clear();
+  ringInside_.clear();
+  do {
+    if (T_.isGhost(e / 3) || (!onSegment && (T_.isFixed(e) || !T_.inDomain(e / 3)))) return false;
+    spokes += T_.isFixed(e);
+    ring_.push_back(T_.tri[next(e)]);
+    ringInside_.push_back(onSegment ? T_.inside[e / 3] : 1);
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  if (onSegment && spokes != 2) return false;
+  const double old[2] = {P(v)[0], P(v)[1]};
+  if (moveTo(v, to[0], to[1]) && !(onSegment && nearFixedLinkEdge(v, to))) {
+    legalizeStar(v);
+    return true;
+  }
+  moveTo(v, old[0], old[1]);
+  return false;
 }
 
 // The ends of the input segment through segment vertex f, whose fixed edge `spoke` leaves f;

@@ -403,6 +403,7 @@ TEST(Refine, ThreadsMakeTheSameMesh) {
       {std::string(kShared) + "/poly/superior.poly", Mode::NonObtuse, 90, 0},
       {std::string(kShared) + "/poly/superior.poly", Mode::Acute, 85, 0},
       {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::NonObtuse, 90, 0},
+      // Improvement rounds in halves (1,605 Steiner points before them).
       {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::Acute, 90, 0},
       {cgshop + "point-set_150_1fb326cf.instance.json", Mode::NonObtuse, 90, 0},
       // A Steiner budget that stops every strategy short.
