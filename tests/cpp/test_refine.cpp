@@ -278,9 +278,9 @@ TEST(Refine, EveryCgshopInstanceAcute) { expectEveryCgshopInstanceSolved(Mode::A
 
 // Wide fans at small corners (Strategy::wideFans): simple-polygon-exterior_10_74050e4d has a
 // 0.18-degree wedge 7,300 units long between a constraint and the boundary, next to a 6-degree
-// corner 200 units away. The usual fans (radius 98 at both) leave 1,862 Steiner points, 692 of
-// them along the wedge; with the tiny corner's fan taking most of the room between the two,
-// 1,423 (turned a quarter, where rounding differs: 1,805 and 1,612).
+// corner 200 units away. The usual fans (radius 98 at both) leave 1,874 Steiner points (692 of
+// 1,862 along the wedge, before the rounds in halves); with the tiny corner's fan taking most of
+// the room between the two, 1,441 (turned a quarter, where rounding differs: 1,840 and 1,624).
 TEST(Refine, WideFansAtTinyCorners) {
   Pslg in = load(std::string(kShared) + "/cgshop2025/simple-polygon-exterior_10_74050e4d.instance.json");
   for (bool turned : {false, true}) {
