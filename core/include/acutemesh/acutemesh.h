@@ -84,8 +84,9 @@ struct Options {
   // scaled to be meshed exactly (coordinates beyond 2^+-64).
   bool exactFeet = false;
   // Threads for acute and non-obtuse refinement, which tries a few strategies at once where it
-  // can (0: one per hardware thread; 1: the calling thread alone). The mesh is the same either
-  // way, and in every build (WebAssembly runs them one after another).
+  // can, and improves a large mesh in two halves at once (0: one per hardware thread; 1: the
+  // calling thread alone). The mesh is the same either way, and in every build (WebAssembly
+  // runs them one after another).
   unsigned threads = 0;
   const std::atomic<bool>* cancel = nullptr;          // set to true to stop early
   // Called at the end of each phase and now and then during refinement (from the thread
