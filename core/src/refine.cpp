@@ -349,6 +349,8 @@ class Refiner {
   CavityRim examineCavity(uint32_t from, const double* x);
   CavityRim growCavity(const double* x);
   uint32_t firstFixedCrossed(uint32_t t, const double* x, uint32_t& reached) const;
+  bool freeStar(uint32_t a);
+  bool segmentStar(uint32_t a, uint32_t spokes[2]);
   bool relocate(uint32_t a);
   bool insideOneDiametralDisk(const std::vector<std::array<double, 2>>& poly) const;
   bool relocateOntoPerpendicular(uint32_t a, const double* old);
@@ -418,7 +420,9 @@ class Refiner {
   // the vertices `due` marks (default: all).
   void removeSteinerPoints(const std::vector<uint8_t>* due = nullptr, int passes = 12);
   void mergeSteinerPoints(const std::vector<uint8_t>* due = nullptr, int passes = 2);
+  void markDue(const std::vector<uint8_t>* due);
   uint32_t mergePass();
+  bool removePoint(uint32_t v);
   bool mergePair(uint32_t u, uint32_t w);
   // One improvement round (polish), and one done in two halves at once (roundInHalves): each
   // half's round works only on the vertices mine_ marks, and one half's steps are logged
@@ -1159,22 +1163,8 @@ bool Refiner::nearFixedLinkEdge(uint32_t a, const double* x) const {
 // where its whole star meets the target and stays a valid triangulation: the boundary's
 // counterpart of relocation. Positions are taken on the original input segment.
 bool Refiner::slide(uint32_t a) {
-  if (role_[a] != kOnSegment && role_[a] != kOnHull) return false;
-  uint32_t spokes[2], count = 0, e0 = T_.vertexEdge[a], e = e0;
-  std::vector<uint32_t>& ring = ring_;
-  ring.clear();
-  ringInside_.clear();
-  do {
-    if (T_.isGhost(e / 3)) return false;
-    if (T_.isFixed(e)) {
-      if (count == 2) return false;
-      spokes[count++] = e;
-    }
-    ring.push_back(T_.tri[next(e)]);
-    ringInside_.push_back(T_.inside[e / 3]);
-    e = T_.opp[prev(e)];
-  } while (e != e0);
-  if (count != 2 || T_.segment[spokes[0]] != T_.segment[spokes[1]]) return false;
+  uint32_t spokes[2];
+  if (!segmentStar(a, spokes)) return false;
   const double *p = P(T_.tri[next(spokes[0])]), *q = P(T_.tri[next(spokes[1])]);
   SegmentLine line = segmentLine(T_.segment[spokes[0]], p, q);
   double tp = line.param(p), tq = line.param(q);
@@ -1354,6 +1344,43 @@ bool Refiner::clipCentroid(double* out) const {
   return true;
 }
 
+// The link of free vertex a in ring_ (counter-clockwise), every triangle of its star counted
+// in the domain (ringInside_); false if a is no free vertex, or its star has a fixed edge or
+// leaves the domain (relocate() keeps such a star's shape).
+bool Refiner::freeStar(uint32_t a) {
+  if (role_[a] != kFree) return false;
+  uint32_t e0 = T_.vertexEdge[a], e = e0;
+  ring_.clear();
+  do {
+    if (T_.isFixed(e) || !T_.inDomain(e / 3)) return false;
+    ring_.push_back(T_.tri[next(e)]);
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  ringInside_.assign(ring_.size(), 1);
+  return true;
+}
+
+// The link of vertex a on a segment (or on a point set's hull) in ring_, which of its star's
+// triangles are in the domain (ringInside_), and its two fixed edges, the pieces of one segment
+// (spokes); false if a is no such vertex, its star holds a ghost, or it has other fixed edges.
+bool Refiner::segmentStar(uint32_t a, uint32_t spokes[2]) {
+  if (role_[a] != kOnSegment && role_[a] != kOnHull) return false;
+  uint32_t count = 0, e0 = T_.vertexEdge[a], e = e0;
+  ring_.clear();
+  ringInside_.clear();
+  do {
+    if (T_.isGhost(e / 3)) return false;
+    if (T_.isFixed(e)) {
+      if (count == 2) return false;
+      spokes[count++] = e;
+    }
+    ring_.push_back(T_.tri[next(e)]);
+    ringInside_.push_back(T_.inside[e / 3]);
+    e = T_.opp[prev(e)];
+  } while (e != e0);
+  return count == 2 && T_.segment[spokes[0]] == T_.segment[spokes[1]];
+}
+
 // Moves free vertex a (seed 2.2) to a point where every triangle of its star meets the
 // target, keeping the star's topology: the point must lie in the kernel of a's link and in
 // the slab of each link edge (angles at the link vertices below the bound; with a minimum
@@ -1362,16 +1389,8 @@ bool Refiner::clipCentroid(double* out) const {
 // (clipToLinkSlabs); its centroid and points between it and the corners are tried, and the
 // first whose star passes the exact test is kept.
 bool Refiner::relocate(uint32_t a) {
-  if (role_[a] != kFree) return false;
-  uint32_t e0 = T_.vertexEdge[a], e = e0;
-  std::vector<uint32_t>& ring = ring_;
-  ring.clear();
-  do {
-    if (T_.isFixed(e) || !T_.inDomain(e / 3)) return false;
-    ring.push_back(T_.tri[next(e)]);
-    e = T_.opp[prev(e)];
-  } while (e != e0);
-  ringInside_.assign(ring.size(), 1);
+  if (!freeStar(a)) return false;
+  const std::vector<uint32_t>& ring = ring_;
   linkEdges_.clear();
   for (size_t i = 0; i < ring.size(); ++i) linkEdges_.push_back({ring[i], ring[(i + 1) % ring.size()]});
   double old[2] = {P(a)[0], P(a)[1]};
@@ -1711,7 +1730,7 @@ void Refiner::polish() {
     size_t before = liveSteiner();
     Triangulation saved = T_;
     std::vector<uint8_t> savedRoles = role_;
-    if (liveSteiner() >= kRoundInHalvesFrom)
+    if (before >= kRoundInHalvesFrom)
       roundInHalves(round);
     else
       polishRound();
@@ -2078,8 +2097,7 @@ void Refiner::removeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
   if (anyBad()) return;
   // The first pass tries every Steiner point; later ones only those whose surroundings a
   // removal has changed since their last try (the rest would fail the same way again).
-  dirty_.assign(T_.vertexCount(), 1);
-  if (due) std::copy(due->begin(), due->end(), dirty_.begin());
+  markDue(due);
   for (int pass = 0; pass < passes; ++pass) {
     uint32_t removed = 0;
     // Oldest first: the early, coarse points are the likeliest to have become redundant
@@ -2088,20 +2106,24 @@ void Refiner::removeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
       if (!dirty_[v] || T_.vertexEdge[v] == kNone || !owned(v)) continue;
       dirty_[v] = 0;
       if (improvementShouldStop()) return;
-      bool gone = role_[v] == kFree ? tryRemove(v) : role_[v] == kOnSegment && tryRemoveFromSegment(v);
-      if (!gone) continue;
-      ++removed, markChanged();
+      if (!removePoint(v)) continue;
+      ++removed;
       if (log_) log_->push_back({Step::Remove, v, kNone, kNone, 0, 0});
     }
     if (removed == 0) break;
   }
 }
 
+// The first pass's vertices: those `due` marks, and any made after it (all without it).
+void Refiner::markDue(const std::vector<uint8_t>* due) {
+  dirty_.assign(T_.vertexCount(), 1);
+  if (due) std::copy(due->begin(), due->end(), dirty_.begin());
+}
+
 // Pairs of neighbouring Steiner points that one point can stand in for.
 void Refiner::mergeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
   if (anyBad()) return;
-  dirty_.assign(T_.vertexCount(), 1);
-  if (due) std::copy(due->begin(), due->end(), dirty_.begin());
+  markDue(due);
   // Two passes a call: polish() calls it round after round (four a call: CG:SHOP 15% slower,
   // no fewer points).
   for (int pass = 0; pass < passes; ++pass)
@@ -2143,6 +2165,15 @@ uint32_t Refiner::mergePass() {
     }
   }
   return merged;
+}
+
+// Steiner vertex v taken out if tryRemove (or, on a segment, tryRemoveFromSegment) can, the
+// stars that changed marked (markChanged).
+bool Refiner::removePoint(uint32_t v) {
+  const bool gone =
+      role_[v] == kFree ? tryRemove(v) : role_[v] == kOnSegment && tryRemoveFromSegment(v);
+  if (gone) markChanged();
+  return gone;
 }
 
 // Neighbours u and w (both free, or both on one segment) made one point if tryMerge (or
@@ -2241,11 +2272,11 @@ void Refiner::replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t m
       const double to[2] = {step.x, step.y};
       replayMove(a, to);
     } else if (step.kind == Step::Remove) {
-      if (role_[a] == kFree ? tryRemove(a) : role_[a] == kOnSegment && tryRemoveFromSegment(a))
-        markChanged();
+      removePoint(a);
     } else {
       const uint32_t b = here[step.w];
-      if (b != kNone && role_[a] == role_[b] && mergePair(a, b)) here[step.made] = T_.vertexCount() - 1;
+      if (b != kNone && role_[a] == role_[b] && mergePair(a, b))
+        here[step.made] = T_.vertexCount() - 1;
     }
   }
 }
@@ -2254,19 +2285,9 @@ void Refiner::replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t m
 // for a segment vertex) and legalizes its star if the star then meets the target, with the
 // checks relocate() and slide() make; else v stays.
 bool Refiner::replayMove(uint32_t v, const double* to) {
-  if (role_[v] != kFree && role_[v] != kOnSegment) return false;
   const bool onSegment = role_[v] == kOnSegment;
-  uint32_t e0 = T_.vertexEdge[v], e = e0, spokes = 0;
-  ring_.clear();
-  ringInside_.clear();
-  do {
-    if (T_.isGhost(e / 3) || (!onSegment && (T_.isFixed(e) || !T_.inDomain(e / 3)))) return false;
-    spokes += T_.isFixed(e);
-    ring_.push_back(T_.tri[next(e)]);
-    ringInside_.push_back(onSegment ? T_.inside[e / 3] : 1);
-    e = T_.opp[prev(e)];
-  } while (e != e0);
-  if (onSegment && spokes != 2) return false;
+  uint32_t spokes[2];
+  if (onSegment ? !segmentStar(v, spokes) : !freeStar(v)) return false;
   const double old[2] = {P(v)[0], P(v)[1]};
   if (moveTo(v, to[0], to[1]) && !(onSegment && nearFixedLinkEdge(v, to))) {
     legalizeStar(v);
