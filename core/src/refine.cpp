@@ -1092,13 +1092,15 @@ uint32_t Refiner::firstFixedCrossed(uint32_t t, const double* x, uint32_t& reach
 // Restores the Delaunay property around vertex a after it moved: otherwise a triangle whose
 // circumcircle now holds a keeps standing, and later insertions (whose cavities assume
 // Delaunay) can miss it. Flips only touch edges next to triangles that miss the target: two
-// acute triangles always meet at a locally Delaunay edge.
+// acute triangles always meet at a locally Delaunay edge. Each star triangle gives its spoke
+// from a and its link edge (the other spoke is the next triangle's): every edge once.
 void Refiner::legalizeStar(uint32_t a) {
   std::vector<uint32_t>& stack = flips_;
   stack.clear();
   uint32_t e0 = T_.vertexEdge[a], e = e0;
   do {
-    for (uint32_t f = 3 * (e / 3); f < 3 * (e / 3) + 3; ++f) stack.push_back(f);
+    stack.push_back(e);
+    stack.push_back(next(e));
     e = T_.opp[prev(e)];
   } while (e != e0);
   T_.legalize(stack);
