@@ -373,14 +373,16 @@ void Triangulation::unfixEdge(uint32_t e) {
   setAttr(opp[e], kPlain, false);
 }
 
-void Triangulation::flipAwaySpoke(uint32_t v, uint32_t w, std::vector<uint32_t>& stack) {
+void Triangulation::flipAwaySpoke(uint32_t v, uint32_t w, std::vector<uint32_t>& stack,
+                                  bool queueDiagonal) {
   uint32_t spoke = findEdge(v, w);
   uint32_t t1 = opp[spoke] / 3;
   flip(spoke);
-  // The ear triangle (now t1) leaves v's star; its edges may need flips later.
+  // The ear triangle (now t1 = x, w, y; 3 * t1 + 2 is y-x, the diagonal) leaves v's star; its
+  // edges may need flips later.
   stack.push_back(3 * t1);
   stack.push_back(3 * t1 + 1);
-  stack.push_back(3 * t1 + 2);
+  if (queueDiagonal) stack.push_back(3 * t1 + 2);
 }
 
 bool Triangulation::removeVertex(uint32_t v) {
@@ -418,7 +420,7 @@ bool Triangulation::removeVertex(uint32_t v) {
       if (best == n || delaunay) best = i, bestDelaunay = delaunay;
     }
     if (best == n) return false;  // only on degenerate (collinear) links; mesh stays valid
-    flipAwaySpoke(v, ring[best], stack);
+    flipAwaySpoke(v, ring[best], stack, false);
     ring.erase(ring.begin() + long(best));
   }
   // Degree 3: v sits inside triangle ring[0..2]; merge its three triangles into that one.
@@ -477,7 +479,7 @@ bool Triangulation::removeFromSegment(uint32_t v, uint32_t ends[2]) {
       legalize(stack);
       return false;  // v stays (its star flipped, still a valid triangulation)
     }
-    flipAwaySpoke(v, ring[best], stack);
+    flipAwaySpoke(v, ring[best], stack, true);  // v may stay (below): its link edges too
     ring.erase(ring.begin() + long(best));
   }
   const uint32_t left = ring[1], right = ring[3];

@@ -156,8 +156,10 @@ class Triangulation {
   Location closedIn(uint32_t t, uint32_t zeros, const uint32_t zeroEdge[2]) const;
   uint32_t splitTriangle(uint32_t t, uint32_t v);
   uint32_t splitEdge(uint32_t e, uint32_t v);
-  // Flips the spoke v-w of an ear of v's link (vertex removal), queueing the ear's edges.
-  void flipAwaySpoke(uint32_t v, uint32_t w, std::vector<uint32_t>& stack);
+  // Flips the spoke v-w of an ear of v's link (vertex removal), queueing the ear's edges: its
+  // two link edges, and the new diagonal too if queueDiagonal (which stays in v's link, so a
+  // removal that goes on until v is gone queues it with a later ear or the last triangle).
+  void flipAwaySpoke(uint32_t v, uint32_t w, std::vector<uint32_t>& stack, bool queueDiagonal);
   void legalizeFrom(uint32_t v, std::vector<uint32_t>& stack);
   // Inside-test of point p against triangle t, honouring ghosts.
   bool inCircumcircle(uint32_t t, uint32_t p) const;
