@@ -518,8 +518,12 @@ class Refiner {
   RepairQueue queue_;
   std::vector<uint32_t> touched_, cavity_, ring_, hole_, flips_;
   std::vector<std::array<uint32_t, 2>> linkEdges_;  // clipToLinkSlabs()' input
-  std::vector<std::array<double, 2>> clipPoly_, clipNext_;  // and scratch
+  std::vector<std::array<double, 2>> clipPoly_;  // its output
+  // Its scratch (two polygons, each corner's side), only ever grown: growing a vector of
+  // arrays zeroes the new elements, 1% of all the time when it shrank after every call.
+  std::vector<std::array<double, 2>> clipWork_;
   std::vector<double> clipSide_;
+  std::vector<std::array<double, 2>> stretches_;  // slideStretches()' scratch
 };
 
 // The corner that most misses the target, decided exactly where the target is 90 degrees.
@@ -1233,7 +1237,7 @@ bool Refiner::slideStretches(double tp, double tq, const SegmentLine& line, doub
   auto mag = [](const double* u, const double* v) {
     return std::fabs(u[0] * v[0]) + std::fabs(u[1] * v[1]);
   };
-  std::vector<std::array<double, 2>>& cut = clipNext_;
+  std::vector<std::array<double, 2>>& cut = stretches_;
   cut.clear();
   for (size_t i = 0; i < ring_.size() && lo < hi; ++i) {
     const double *x = P(ring_[i]), *y = P(ring_[(i + 1) % ring_.size()]);
@@ -1285,11 +1289,11 @@ void Refiner::clipToLinkSlabs(bool wedges) {
   // Every clip adds at most one corner: the buffers are sized once, and the loops run on raw
   // pointers (the hottest loop of the improvement pass).
   const size_t clips = linkEdges_.size() * (1 + 2 * (acute_ || nonObtuse_) + 2 * (options_.minAngle > 0));
-  clipPoly_.resize(4 + clips + 1);
-  clipNext_.resize(4 + clips + 1);
-  clipSide_.resize(4 + clips + 2);
-  std::array<double, 2>* poly = clipPoly_.data();
-  std::array<double, 2>* next = clipNext_.data();
+  const size_t room = 4 + clips + 1;
+  if (clipWork_.size() < 2 * room) clipWork_.resize(2 * room);
+  if (clipSide_.size() < room + 1) clipSide_.resize(room + 1);
+  std::array<double, 2>* poly = clipWork_.data();
+  std::array<double, 2>* next = poly + room;
   double* f = clipSide_.data();
   size_t n = 4;
   poly[0] = {lo[0], lo[1]}, poly[1] = {hi[0], lo[1]}, poly[2] = {hi[0], hi[1]}, poly[3] = {lo[0], hi[1]};
@@ -1333,8 +1337,7 @@ void Refiner::clipToLinkSlabs(bool wedges) {
     }
     clip(-dy, dx, -dy * x[0] + dx * x[1]);
   }
-  if (poly != clipPoly_.data()) std::copy(poly, poly + n, clipPoly_.data());
-  clipPoly_.resize(n);
+  clipPoly_.assign(poly, poly + n);
 }
 
 // The mean of clipPoly_'s corners (inside it, being convex), if it is a region at all.
