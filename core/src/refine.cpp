@@ -1287,8 +1287,8 @@ void Refiner::clipToLinkSlabs(bool wedges) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (const auto& edge : linkEdges_)
     for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], P(edge[0])[k]), hi[k] = std::max(hi[k], P(edge[0])[k]);
-  // Every clip adds at most one corner: the buffers are sized once, and the loops run on raw
-  // pointers (the hottest loop of the improvement pass).
+  // Every clip adds at most one corner: the buffers are sized before the loops, which run on
+  // raw pointers (the hottest loop of the improvement pass).
   const size_t clips = linkEdges_.size() * (1 + 2 * (acute_ || nonObtuse_) + 2 * (options_.minAngle > 0));
   const size_t room = 4 + clips + 1;
   if (clipWork_.size() < 2 * room) clipWork_.resize(2 * room);
@@ -2288,14 +2288,14 @@ void Refiner::replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t m
 }
 
 // After an improvement round moved Steiner vertex v (smooth, replayMove): its star legalized,
-// unless v is free and no foot stands for an exact right angle (feet_). Then nothing would
-// flip: the mesh meets the target (polish starts on such a mesh, and every step keeps its
-// stars so), v's new star included, and v's link edges are fixed or lie between two triangles
-// of the domain, each at most right-angled at the corner across: locally Delaunay. (Where a
-// failed removal put a vertex back with another star among cocircular points, a triangle may
-// miss the target until the round's repair pass, which legalizes first.) Legalized anyway,
-// the 666,000 moves of free vertices in the acute and non-obtuse runs on CG:SHOP, A and
-// Superior flipped nothing; skipped, the 25 slowest acute instances take 2% fewer instructions.
+// unless v is free and no foot stands for an exact right angle (feet_), where nothing would
+// flip. The rounds work on a mesh that meets the target (each step keeps it so; v's new star
+// does), and each link edge of a free vertex is fixed or lies between two triangles of the
+// domain, neither obtuse across it: locally Delaunay (see legalizeStar). (A vertex put back
+// after a failed removal may get another star among cocircular points, and a triangle miss the
+// target until the round's repair pass, which legalizes first.) Legalized anyway, the 666,000
+// moves of free vertices in the acute and non-obtuse runs on CG:SHOP, A and Superior flipped
+// nothing; skipped, the 25 slowest acute instances take 2% fewer instructions.
 void Refiner::settleMove(uint32_t v) {
   if (role_[v] == kFree && !feet_) return;
   legalizeStar(v);
