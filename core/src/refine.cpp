@@ -1137,11 +1137,6 @@ Refiner::SegmentLine Refiner::segmentLine(uint32_t seg, const double* p, const d
 bool Refiner::moveTo(uint32_t a, double x, double y) {
   double* where = &T_.pts[2 * size_t(a)];
   where[0] = x, where[1] = y;
-  // No edge shorter than the refinement's smallest (a slide into a stretch a few ulps long
-  // left two segment vertices 40 ulps apart, too close for their subsegment to have a
-  // direction).
-  for (uint32_t w : ring_)
-    if (dist2(where, P(w)) < minEdge2_) return false;
   // The right angle at a is what most samples fail: tested first (the answer is the same).
   if (acute_ || nonObtuse_)
     for (size_t i = 0, n = ring_.size(); i < n; ++i) {
@@ -1149,8 +1144,13 @@ bool Refiner::moveTo(uint32_t a, double x, double y) {
       double d = dot2d(where, P(ring_[i]), P(ring_[i + 1 < n ? i + 1 : 0]));
       if (nonObtuse_ ? d < 0 : d <= 0) return false;
     }
-  for (size_t i = 0; i < ring_.size(); ++i)
-    if (orient2d(P(ring_[i]), P(ring_[(i + 1) % ring_.size()]), where) <= 0) return false;
+  // No edge shorter than the refinement's smallest (a slide into a stretch a few ulps long
+  // left two segment vertices 40 ulps apart, too close for their subsegment to have a
+  // direction).
+  for (uint32_t w : ring_)
+    if (dist2(where, P(w)) < minEdge2_) return false;
+  for (size_t i = 0, n = ring_.size(); i < n; ++i)
+    if (orient2d(P(ring_[i]), P(ring_[i + 1 < n ? i + 1 : 0]), where) <= 0) return false;
   return starMeetsTarget(a);
 }
 
