@@ -2302,8 +2302,8 @@ void Refiner::settleMove(uint32_t v) {
 }
 
 // Moves Steiner vertex v to `to` (where smoothing moved it on the copy: on its segment's line
-// for a segment vertex) and legalizes its star if the star then meets the target, with the
-// checks relocate() and slide() make; else v stays.
+// for a segment vertex) and settles it there (settleMove) if its star then meets the target,
+// with the checks relocate() and slide() make; else v stays.
 bool Refiner::replayMove(uint32_t v, const double* to) {
   const bool onSegment = role_[v] == kOnSegment;
   uint32_t spokes[2];
