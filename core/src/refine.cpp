@@ -417,8 +417,8 @@ class Refiner {
     double x, y;
   };
   std::vector<Moved> moved_;
-  // Passes of removals (merges) until one gains nothing, at most `passes`; the first tries
-  // the vertices `due` marks (default: all).
+  // Passes of removals until one gains nothing, at most `passes` (of merges: one pass); the
+  // first tries the vertices `due` marks (default: all).
   void removeSteinerPoints(const std::vector<uint8_t>* due = nullptr, int passes = 12);
   void mergeSteinerPoints(const std::vector<uint8_t>* due = nullptr);
   void markDue(const std::vector<uint8_t>* due);
@@ -1719,8 +1719,8 @@ constexpr size_t kSmallPolish = 400;
 // meshes ran all twelve (simple-polygon-exterior-20_150_7768dd44: 921 -> 874 Steiner points,
 // 90 -> 130 ms). With 1%: CG:SHOP acute 47,393 -> 47,554 Steiner points, the 25 slowest
 // instances 11% less wall time, 9 -> 3 of them over 100 ms (min of 5 runs each). With 2%
-// (polishRound's removals after the merges made the points for it): 47,456 -> 47,585, 7.6%
-// fewer instructions on the 25 slowest (1.5%: 47,496, -2.8%; 2.5%: 47,780, -14%).
+// (the removals after the merges, see polishRound, saved the points it costs): 47,456 ->
+// 47,585, 7.6% fewer instructions on the 25 slowest (1.5%: 47,496, -2.8%; 2.5%: 47,780, -14%).
 constexpr size_t kRoundInHalvesFrom = 700;
 constexpr double kHalvesGain = 0.02;
 // A pair whose joint link has this many edges or more is not tried for a merge unless one
