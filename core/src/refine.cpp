@@ -417,10 +417,10 @@ class Refiner {
     double x, y;
   };
   std::vector<Moved> moved_;
-  // Passes of removals until one gains nothing, at most `passes` (of merges: one pass); the
-  // first tries the vertices `due` marks (default: all).
+  // Passes of removals (merges) until one gains nothing, at most `passes`; the first tries
+  // the vertices `due` marks (default: all).
   void removeSteinerPoints(const std::vector<uint8_t>* due = nullptr, int passes = 12);
-  void mergeSteinerPoints(const std::vector<uint8_t>* due = nullptr);
+  void mergeSteinerPoints(const std::vector<uint8_t>* due = nullptr, int passes = 1);
   void markDue(const std::vector<uint8_t>* due);
   uint32_t mergePass();
   bool removePoint(uint32_t v);
@@ -433,7 +433,7 @@ class Refiner {
     uint32_t u, w, made;  // the vertex moved or removed; the pair merged and the point made
     double x, y;          // where it moved
   };
-  void polishRound();
+  void polishRound(bool removeAfterMerging);
   void roundInHalves(int round);
   void replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t made);
   bool replayMove(uint32_t v, const double* to);
@@ -1741,7 +1741,7 @@ void Refiner::polish() {
     if (before >= kRoundInHalvesFrom)
       roundInHalves(round);
     else
-      polishRound();
+      polishRound(before >= kSmallPolish);
     StepResult result = repairAll();
     size_t after = liveSteiner();
     if (!result.ok() || anyBad() || after > before) {
@@ -1759,14 +1759,26 @@ void Refiner::polish() {
 }
 
 // Smoothing makes the room removals and merges need: a sweep before each removal and merge
-// pass (against one sweep a round: CG:SHOP acute 54,476 -> 54,030 Steiner points in 12% less
-// time on its 25 slowest instances, more merges succeed). One merge pass, then the removals
-// again: a merge changes the stars around it, and there removals, several times cheaper a
-// success than merges, find more. Against smoothing twice, removals, smoothing and two merge
-// passes: CG:SHOP acute 47,554 -> 47,456 Steiner points in 3% fewer instructions on its 25
-// slowest instances, non-obtuse 13,235 -> 13,207 (nearby orders, one or two sweeps first,
-// one removal pass last, all came out 100-150 points under the old one).
-void Refiner::polishRound() {
+// step (against one sweep a round: CG:SHOP acute 54,476 -> 54,030 Steiner points in 12% less
+// time on its 25 slowest instances, more merges succeed). On a mesh of kSmallPolish Steiner
+// points or more (removeAfterMerging; the halves of roundInHalves too), one merge pass and
+// then the removals again: a merge changes the stars around it, and there removals, several
+// times cheaper a success than merges, find more. Against the small meshes' round there
+// (smoothing twice, removals, smoothing, two merge passes): CG:SHOP acute 47,554 -> 47,456
+// Steiner points in 3% fewer instructions on its 25 slowest instances, non-obtuse 13,235 ->
+// 13,207 (nearby orders, one or two sweeps first, one removal pass last, all came out 100-150
+// points under it). On the smaller meshes it gained nothing (CG:SHOP's under 400 points:
+// 17,488 -> 17,490; A acute 71 -> 72, Lake Superior 230 -> 233) and took longer (Superior
+// acute 30 -> 38 ms, min of 7).
+void Refiner::polishRound(bool removeAfterMerging) {
+  if (!removeAfterMerging) {
+    smooth();
+    smooth();
+    removeSteinerPoints();
+    smooth();
+    mergeSteinerPoints(nullptr, 2);
+    return;
+  }
   smooth();
   removeSteinerPoints();
   smooth();
@@ -2133,9 +2145,10 @@ void Refiner::markDue(const std::vector<uint8_t>* due) {
 
 // Pairs of neighbouring Steiner points that one point can stand in for (on a mesh that meets
 // the target, as removeSteinerPoints).
-void Refiner::mergeSteinerPoints(const std::vector<uint8_t>* due) {
+void Refiner::mergeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
   markDue(due);
-  mergePass();
+  for (int pass = 0; pass < passes; ++pass)
+    if (mergePass() == 0 || budget_.stop()) break;
 }
 
 // Tries each due Steiner vertex (of mine_) with its partners, the same pair once.
@@ -2245,18 +2258,18 @@ void Refiner::roundInHalves(int round) {
   other.mine_ = &mine[1];
   other.log_ = &log;
   mine_ = &mine[0];
-  auto secondHalf = [&] { other.polishRound(); };
+  auto secondHalf = [&] { other.polishRound(true); };
 #ifdef ACUTEMESH_STRATEGY_THREADS
   if (threadsFor(options_) > 1) {
     std::thread helper(secondHalf);
-    polishRound();
+    polishRound(true);
     helper.join();
   } else {
-    polishRound();
+    polishRound(true);
     secondHalf();
   }
 #else
-  polishRound();
+  polishRound(true);
   secondHalf();
 #endif
   mine_ = nullptr;
