@@ -1722,6 +1722,7 @@ constexpr size_t kSmallPolish = 400;
 // (the removals after the merges, see polishRound, saved the points it costs): 47,456 ->
 // 47,585, 7.6% fewer instructions on the 25 slowest (1.5%: 47,496, -2.8%; 2.5%: 47,780, -14%).
 constexpr size_t kRoundInHalvesFrom = 700;
+static_assert(kRoundInHalvesFrom >= kSmallPolish, "rounds in halves use the larger meshes' round");
 constexpr double kHalvesGain = 0.02;
 // A pair whose joint link has this many edges or more is not tried for a merge unless one
 // point could stand in for both without moving its neighbours (mergePoint): such tries
@@ -1760,19 +1761,18 @@ void Refiner::polish() {
 
 // Smoothing makes the room removals and merges need: a sweep before each removal and merge
 // step (against one sweep a round: CG:SHOP acute 54,476 -> 54,030 Steiner points in 12% less
-// time on its 25 slowest instances, more merges succeed); on small meshes two before the
-// removals (a sweep moves each vertex against its neighbours' old places, the second settles
-// most of that) and two merge passes (four: 15% slower, no fewer points). On a mesh of kSmallPolish Steiner
-// points or more (removeAfterMerging; the halves of roundInHalves too), one merge pass and
-// then the removals again: a merge changes the stars around it, and there removals, several
-// times cheaper a success than merges, find more. Against the small meshes' round there
-// (smoothing twice, removals, smoothing, two merge passes): CG:SHOP acute 47,554 -> 47,456
-// Steiner points in 3% fewer instructions on its 25 slowest instances, non-obtuse 13,235 ->
-// 13,207 (nearby orders, one or two sweeps first, one removal pass last, all came out 100-150
-// points under it). On the smaller meshes it gained nothing (CG:SHOP's under 400 points:
-// 17,488 -> 17,490; A acute 71 -> 72, Lake Superior 230 -> 233) and took longer (Superior
-// acute 30 -> 38 ms, min of 7). (Only from kSmallPolish, and with kHalvesGain at 2%: 47,602
-// and 13,219.)
+// time on its 25 slowest instances, more merges succeed). On a mesh under kSmallPolish
+// Steiner points: two sweeps before the removals (a sweep moves each vertex against its
+// neighbours' old places, the second settles most of that), and two merge passes (four: 15%
+// slower, no fewer points). From kSmallPolish (removeAfterMerging; every round in halves,
+// kRoundInHalvesFrom being larger): one merge pass, then the removals again, as a merge
+// changes the stars around it and removals, several times cheaper a success than merges, find
+// more there. Against the small meshes' round: CG:SHOP acute 47,554 -> 47,456 Steiner points
+// in 3% fewer instructions on its 25 slowest instances, non-obtuse 13,235 -> 13,207 (nearby
+// orders, one or two sweeps first, one removal pass last, all came out 100-150 points under
+// it). On the smaller meshes it gained nothing (CG:SHOP's under 400 points: 17,488 -> 17,490;
+// A acute 71 -> 72, Lake Superior 230 -> 233) and took longer (Superior acute 30 -> 38 ms, min
+// of 7). (Only from kSmallPolish, and with kHalvesGain at 2%: 47,602 and 13,219.)
 void Refiner::polishRound(bool removeAfterMerging) {
   if (!removeAfterMerging) {
     smooth();
