@@ -1396,10 +1396,11 @@ bool Refiner::segmentStar(uint32_t a, uint32_t spokes[2]) {
 // (clipToLinkSlabs); its centroid and points between it and the corners are tried, and the
 // first whose star passes the exact test is kept.
 bool Refiner::relocate(uint32_t a) {
-  if (!freeStar(a) || !linkLeavesRoom()) return false;
+  if (!freeStar(a)) return false;
   const std::vector<uint32_t>& ring = ring_;
   linkEdges_.clear();
   for (size_t i = 0; i < ring.size(); ++i) linkEdges_.push_back({ring[i], ring[(i + 1) % ring.size()]});
+  if (!linkLeavesRoom()) return false;
   double old[2] = {P(a)[0], P(a)[1]};
   // Below 90 degrees the bound's wedges first, then the plain slabs: the angle at a is no
   // half-plane, and the wider region's samples find places the narrower one's miss.
@@ -1422,17 +1423,25 @@ bool Refiner::relocate(uint32_t a) {
   return false;
 }
 
-// Acute and non-obtuse: wherever a stands in the kernel of its link (ring_), the two angles
-// of its star at a link vertex sum to the link's inner angle there, so a reflex link vertex
-// (or, acute, a straight one) leaves no place for a at all. Half of relocate()'s regions on
-// CG:SHOP's slowest acute instance were such, clipped to nothing at full cost. (Exact, so
-// that it only ever gives up moves the exact test would refuse.)
+// Acute and non-obtuse: whether the region clipToLinkSlabs would clip from linkEdges_ may be
+// anything but empty. Where two of its edges x->y, y->z turn right at y (acute: or go straight
+// on), a point p left of both makes angles at y in triangles (p, x, y) and (p, y, z) that sum
+// to 360 degrees less the turn, at least 180 (more than 180 where they turn right), so one of
+// them is right or obtuse. For relocation that is half of the regions on CG:SHOP's slowest
+// acute instance, clipped to nothing at full cost. (Exact, so that it gives up only what the
+// exact test would refuse.)
 bool Refiner::linkLeavesRoom() const {
   if (!(acute_ || nonObtuse_)) return true;
-  const size_t n = ring_.size();
+  const size_t n = linkEdges_.size();
   for (size_t i = 0; i < n; ++i) {
-    const double turn = orient2d(P(ring_[i ? i - 1 : n - 1]), P(ring_[i]), P(ring_[i + 1 < n ? i + 1 : 0]));
-    if (nonObtuse_ ? turn < 0 : turn <= 0) return false;
+    const uint32_t y = linkEdges_[i][1];
+    for (size_t k = 1; k < n; ++k) {  // the next edge first: links come in order
+      const auto& after = linkEdges_[(i + k) % n];
+      if (after[0] != y) continue;
+      const double turn = orient2d(P(linkEdges_[i][0]), P(y), P(after[1]));
+      if (nonObtuse_ ? turn < 0 : turn <= 0) return false;
+      break;
+    }
   }
   return true;
 }
@@ -2005,8 +2014,9 @@ bool Refiner::mergePoint(uint32_t u, uint32_t w, double* out) {
       e = T_.opp[prev(e)];
     } while (e != e0);
   }
-  clipToLinkSlabs(strictMax_);
   double centre[2];
+  if (!linkLeavesRoom()) return linkEdges_.size() < kMergeLinkEdges;
+  clipToLinkSlabs(strictMax_);
   if (!clipCentroid(centre)) return linkEdges_.size() < kMergeLinkEdges;
   out[0] = centre[0], out[1] = centre[1];
   return true;
