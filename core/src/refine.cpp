@@ -456,6 +456,11 @@ class Refiner {
                              bool fewestBad);
   int badChange(const double* x, uint32_t split = kNone, uint32_t footOf = kNone) const;
   size_t weighCandidates(uint32_t t, const std::vector<std::array<double, 3>>& points, int& fewest);
+  bool insertWeighed(uint32_t t, const std::vector<std::array<double, 3>>& points, size_t chosen);
+  // The triangle whose candidates_ repairGain weighed last in repairAll's loop, and its choice
+  // (kNone: none since the loop's last step).
+  uint32_t weighedFor_ = kNone;
+  size_t weighedChoice_ = 0;
   // Triangle t's shortest edge pq and its circumcircle: where the Steiner point searches start.
   struct ShortestEdge {
     const double *p, *q;
@@ -1538,6 +1543,9 @@ bool Refiner::repair(uint32_t t, Corner c) {
     // and next to a sliver each split starts a chain of feet across it: a point of the slice
     // that encroaches nothing goes first, if there is one, and of those the one that leaves
     // the fewest bad triangles.
+    // (Unless repairAll has just weighed t's candidates for its gain, and nothing above has
+    // changed the mesh since: the same candidates, the same choice.)
+    if (weighedFor_ == t && strategy_.weighPoints) return insertWeighed(t, candidates_, weighedChoice_);
     slicePoints(t, candidates_);
     return insertSparingSegments(t, candidates_, true);
   }
@@ -1562,8 +1570,7 @@ bool Refiner::insertSparingSegments(uint32_t t, const std::vector<std::array<dou
                                     bool fewestBad) {
   if (fewestBad && strategy_.weighPoints) {
     int fewest = 0;
-    size_t chosen = weighCandidates(t, points, fewest);
-    if (chosen < points.size() && insertSteiner(t, points[chosen].data())) return true;
+    return insertWeighed(t, points, weighCandidates(t, points, fewest));
   } else {
     for (size_t i = 0; strategy_.weighPoints && i < points.size() && i < kSliceTries; ++i) {
       const double* x = points[i].data();
@@ -1572,6 +1579,13 @@ bool Refiner::insertSparingSegments(uint32_t t, const std::vector<std::array<dou
       if (rim.encroached == kNone && insertSteiner(t, x, rim)) return true;
     }
   }
+  return insertSteiner(t, points[0].data());
+}
+
+// Inserts candidate `chosen` for t (weighCandidates' choice), else (none, or it split a
+// subsegment it encroaches after all) the best.
+bool Refiner::insertWeighed(uint32_t t, const std::vector<std::array<double, 3>>& points, size_t chosen) {
+  if (chosen < points.size() && insertSteiner(t, points[chosen].data())) return true;
   return insertSteiner(t, points[0].data());
 }
 
@@ -1823,7 +1837,9 @@ int Refiner::repairGain(uint32_t t, Corner c) {
   if (!c.large || T_.isFixed(3 * t + uint32_t((c.k + 1) % 3))) return 1;
   slicePoints(t, candidates_);
   int fewest = 0;
-  if (weighCandidates(t, candidates_, fewest) == candidates_.size()) return -1;
+  const size_t chosen = weighCandidates(t, candidates_, fewest);
+  weighedFor_ = t, weighedChoice_ = chosen;
+  if (chosen == candidates_.size()) return -1;
   return -std::min(fewest, 1);
 }
 
@@ -1860,6 +1876,7 @@ StepResult Refiner::repairAll() {
     if (!T_.inDomain(t) || shortestEdge2(t) != entry.size) continue;
     Corner c = worstCorner(t);
     if (c.k < 0) continue;
+    weighedFor_ = kNone;
     if (byGain) {
       int gain = repairGain(t, c);
       if (gain < entry.gain) {
