@@ -9,6 +9,9 @@
 #include <unistd.h>
 #include <string>
 #include <vector>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
@@ -367,9 +370,26 @@ static int run(int argc, char** argv) {
   return 0;
 }
 
+// glibc hands large freed blocks back to the kernel (blocks of 128 KB and more are mapped on
+// their own, and the heap's top is trimmed), and the next copy of a triangulation (each
+// strategy's run, each improvement round) faults the same memory in again. On the cloud VMs
+// we measure on a page fault costs about 12 microseconds: a 250-vertex CG:SHOP instance took
+// some 900 of them, about a tenth of its time. The CLI runs once and exits, so freed memory
+// stays in the process (about 750 faults, the median run of that instance 92 -> 82 ms).
+namespace {
+void keepFreedMemory() {
+#ifdef __GLIBC__
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);   // glibc's largest: bigger blocks are mapped anyway
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  mallopt(M_TOP_PAD, 64 << 20);          // grow the heap in large steps (untouched: no cost)
+#endif
+}
+}  // namespace
+
 // Memory running out anywhere (reading a huge file, writing a huge mesh) is an error line
 // and exit status 2 like any other, not an abort.
 int main(int argc, char** argv) {
+  keepFreedMemory();
   try {
     return run(argc, argv);
   } catch (const std::bad_alloc&) {
