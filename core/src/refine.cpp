@@ -1752,16 +1752,20 @@ StepResult Refiner::runSteps() {
 // or with more points than it started with is undone.
 constexpr double kPolishGain = 0.005;
 constexpr size_t kSmallPolish = 400;
-// Meshes with at least this many Steiner points have their improvement rounds in two halves at
-// once (roundInHalves), and need kHalvesGain of a round to go on: such rounds gain for longer
-// (the split changes sides and the order of the work each round), and with 0.5% the slowest
-// meshes ran all twelve (simple-polygon-exterior-20_150_7768dd44: 921 -> 874 Steiner points,
-// 90 -> 130 ms). With 1%: CG:SHOP acute 47,393 -> 47,554 Steiner points, the 25 slowest
-// instances 11% less wall time, 9 -> 3 of them over 100 ms (min of 5 runs each). With 2%
-// (the removals after the merges, see polishRound, saved the points it costs): 47,456 ->
-// 47,585, 7.6% fewer instructions on the 25 slowest (1.5%: 47,496, -2.8%; 2.5%: 47,780, -14%).
-constexpr size_t kRoundInHalvesFrom = 700;
-static_assert(kRoundInHalvesFrom >= kSmallPolish, "rounds in halves use the larger meshes' round");
+// From kSmallPolish Steiner points on, the rounds run in two halves at once (roundInHalves):
+// on 2 threads, CG:SHOP acute's instances that polish from 400 to 700 points take a fifth less
+// time (point-set_150_1fb326cf, six rounds from 871 points, five of them single-threaded
+// below 700: median 94 -> 75 ms), with as many points (47,704 -> 47,701; non-obtuse 13,219 ->
+// 13,235). (From 700 points before.)
+// Rounds in halves gain for longer (the split changes sides and the order of the work each
+// round): with 0.5% a round from 700 points on, the slowest meshes ran all twelve
+// (simple-polygon-exterior-20_150_7768dd44: 921 -> 874 Steiner points, 90 -> 130 ms), so there
+// a round must take out kHalvesGain to go on. With 1%: CG:SHOP acute 47,393 -> 47,554 Steiner
+// points, the 25 slowest instances 11% less wall time, 9 -> 3 of them over 100 ms (min of 5
+// runs each). With 2% (the removals after the merges, see polishRound, saved the points it
+// costs): 47,456 -> 47,585, 7.6% fewer instructions on the 25 slowest (1.5%: 47,496, -2.8%;
+// 2.5%: 47,780, -14%).
+constexpr size_t kHalvesGainFrom = 700;
 constexpr double kHalvesGain = 0.02;
 // From this many Steiner points a round must take out kLargeGain to go on: their rounds take
 // the longest (CG:SHOP acute's slowest instances all start their polish with 1,100 to 1,800
@@ -1786,10 +1790,10 @@ void Refiner::polish() {
     size_t before = liveSteiner();
     Triangulation saved = T_;
     std::vector<uint8_t> savedRoles = role_;
-    if (before >= kRoundInHalvesFrom)
+    if (before >= kSmallPolish)
       roundInHalves(round);
     else
-      polishRound(before >= kSmallPolish);
+      polishRound(false);
     StepResult result = repairAll();
     size_t after = liveSteiner();
     if (!result.ok() || anyBad() || after > before) {
@@ -1801,9 +1805,9 @@ void Refiner::polish() {
     }
     idleRounds = after == before ? idleRounds + 1 : 0;
     const bool small = after < kSmallPolish;
-    const double gain = before >= kLargeRoundFrom       ? kLargeGain
-                        : before >= kRoundInHalvesFrom ? kHalvesGain
-                                                       : kPolishGain;
+    const double gain = before >= kLargeRoundFrom  ? kLargeGain
+                        : before >= kHalvesGainFrom ? kHalvesGain
+                                                    : kPolishGain;
     if (small ? idleRounds == 2 : double(before - after) < gain * double(before)) return;
   }
 }
@@ -1813,8 +1817,8 @@ void Refiner::polish() {
 // time on its 25 slowest instances, more merges succeed). On a mesh under kSmallPolish
 // Steiner points: two sweeps before the removals (a sweep moves each vertex against its
 // neighbours' old places, the second settles most of that), and two merge passes (four: 15%
-// slower, no fewer points). From kSmallPolish (removeAfterMerging; every round in halves,
-// kRoundInHalvesFrom being larger): one merge pass, then the removals again, as a merge
+// slower, no fewer points). From kSmallPolish (removeAfterMerging; the rounds in halves, which
+// start there): one merge pass, then the removals again, as a merge
 // changes the stars around it and removals, several times cheaper a success than merges, find
 // more there. Against the small meshes' round: CG:SHOP acute 47,554 -> 47,456 Steiner points
 // in 3% fewer instructions on its 25 slowest instances, non-obtuse 13,235 -> 13,207 (nearby
@@ -2264,8 +2268,8 @@ bool Refiner::mergePair(uint32_t u, uint32_t w) {
   return true;
 }
 
-// An improvement round in two halves at once (polish, on a mesh of kRoundInHalvesFrom Steiner
-// points or more): the Steiner vertices on either side of their median x (y in odd rounds),
+// An improvement round in two halves at once (polish, on a mesh of kSmallPolish Steiner points
+// or more): the Steiner vertices on either side of their median x (y in odd rounds),
 // those with a neighbour across it excepted, are smoothed, removed and merged as in a round of
 // their own, one half here and the other on a copy of the triangulation, on a second thread
 // where there is one (the same steps either way, so every build and thread count makes the
