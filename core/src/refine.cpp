@@ -1433,8 +1433,9 @@ bool Refiner::relocate(uint32_t a) {
 // on), a point p left of both makes angles at y in triangles (p, x, y) and (p, y, z) that sum
 // to 360 degrees less the turn, at least 180 (more than 180 where they turn right), so one of
 // them is right or obtuse. For relocation that is half of the regions on CG:SHOP's slowest
-// acute instance, clipped to nothing at full cost. (Exact, so that it gives up only what the
-// exact test would refuse.)
+// acute instance, clipped to nothing at full cost (exact, so that it gives up only moves the
+// exact test would refuse); mergePoint then takes the pair's midpoint, as for any empty
+// region (where clipping sometimes left a rounding sliver's centre).
 bool Refiner::linkLeavesRoom() const {
   if (!(acute_ || nonObtuse_)) return true;
   const size_t n = linkEdges_.size();
@@ -1812,20 +1813,19 @@ void Refiner::polish() {
   }
 }
 
-// Smoothing makes the room removals and merges need: a sweep before each removal and merge
-// step (against one sweep a round: CG:SHOP acute 54,476 -> 54,030 Steiner points in 12% less
-// time on its 25 slowest instances, more merges succeed). On a mesh under kSmallPolish
-// Steiner points: two sweeps before the removals (a sweep moves each vertex against its
-// neighbours' old places, the second settles most of that), and two merge passes (four: 15%
-// slower, no fewer points). From kSmallPolish (removeAfterMerging; the rounds in halves, which
-// start there): one merge pass, then the removals again, as a merge
-// changes the stars around it and removals, several times cheaper a success than merges, find
-// more there. Against the small meshes' round: CG:SHOP acute 47,554 -> 47,456 Steiner points
-// in 3% fewer instructions on its 25 slowest instances, non-obtuse 13,235 -> 13,207 (nearby
-// orders, one or two sweeps first, one removal pass last, all came out 100-150 points under
-// it). On the smaller meshes it gained nothing (CG:SHOP's under 400 points: 17,488 -> 17,490;
-// A acute 71 -> 72, Lake Superior 230 -> 233) and took longer (Superior acute 30 -> 38 ms, min
-// of 7). (Only from kSmallPolish, and with kHalvesGain at 2%: 47,602 and 13,219.)
+// Smoothing makes the room removals and merges need: a sweep before each removal and merge step
+// (against one sweep a round: CG:SHOP acute 54,476 -> 54,030 Steiner points in 12% less time on its
+// 25 slowest instances, more merges succeed). On a mesh under kSmallPolish Steiner points: two
+// sweeps before the removals (a sweep moves each vertex against its neighbours' old places, the
+// second settles most of that), and two merge passes (four: 15% slower, no fewer points). From
+// kSmallPolish (removeAfterMerging; the rounds in halves, which start there): one merge pass, then
+// the removals again, as a merge changes the stars around it and removals, several times cheaper a
+// success than merges, find more there. Against the small meshes' round: CG:SHOP acute 47,554 ->
+// 47,456 Steiner points in 3% fewer instructions on its 25 slowest instances, non-obtuse 13,235 ->
+// 13,207 (nearby orders, one or two sweeps first, one removal pass last, all came out 100-150
+// points under it). On the smaller meshes it gained nothing (CG:SHOP's under 400 points: 17,488 ->
+// 17,490; A acute 71 -> 72, Lake Superior 230 -> 233) and took longer (Superior acute 30 -> 38 ms,
+// min of 7). (Only from kSmallPolish, and with kHalvesGain at 2%: 47,602 and 13,219.)
 void Refiner::polishRound(bool removeAfterMerging) {
   if (!removeAfterMerging) {
     smooth();
