@@ -303,7 +303,10 @@ class Refiner {
   }
   void segmentEnds(uint32_t f, uint32_t spoke, const double*& a, const double*& b) const;
   double shortestEdge2(uint32_t t) const;
-  bool repair(uint32_t t, Corner c);
+  // weighed: repairGain's choice among t's candidates (in candidates_), if it has just weighed
+  // them and nothing has changed the mesh since; kNotWeighed otherwise.
+  static constexpr size_t kNotWeighed = SIZE_MAX;
+  bool repair(uint32_t t, Corner c, size_t weighed = kNotWeighed);
   // Splits at `preferred` (a fraction of the way from the edge's first end) when given and
   // well inside, else by the shell rule.
   // footOf: the vertex whose altitude foot `preferred` is (see footOf_).
@@ -445,7 +448,7 @@ class Refiner {
   uint32_t attempts_ = 0;  // removal and merge attempts so far (improvementShouldStop)
   void smooth();
   StepResult repairAll();
-  int repairGain(uint32_t t, Corner c);
+  int repairGain(uint32_t t, Corner c, size_t* weighed = nullptr);
   bool starMeetsTarget(uint32_t a) const;
   // Points of slice(pq) (pq the shortest edge of t), farthest from every vertex first: x, y
   // and that distance squared.
@@ -457,10 +460,6 @@ class Refiner {
   int badChange(const double* x, uint32_t split = kNone, uint32_t footOf = kNone) const;
   size_t weighCandidates(uint32_t t, const std::vector<std::array<double, 3>>& points, int& fewest);
   bool insertWeighed(uint32_t t, const std::vector<std::array<double, 3>>& points, size_t chosen);
-  // The triangle whose candidates_ repairGain weighed last in repairAll's loop, and its choice
-  // (kNone: none since the loop's last step).
-  uint32_t weighedFor_ = kNone;
-  size_t weighedChoice_ = 0;
   // Triangle t's shortest edge pq and its circumcircle: where the Steiner point searches start.
   struct ShortestEdge {
     const double *p, *q;
@@ -1498,7 +1497,7 @@ bool Refiner::relocateOntoPerpendicular(uint32_t a, const double* old) {
   return false;
 }
 
-bool Refiner::repair(uint32_t t, Corner c) {
+bool Refiner::repair(uint32_t t, Corner c, size_t weighed) {
   // Moving vertices (relocation, the removal pass) can leave edges that are not locally
   // Delaunay; a triangle standing on one is flipped away first, since the search for a new
   // point below assumes empty circumcircles.
@@ -1545,8 +1544,8 @@ bool Refiner::repair(uint32_t t, Corner c) {
     // that encroaches nothing goes first, if there is one, and of those the one that leaves
     // the fewest bad triangles.
     // (Unless repairAll has just weighed t's candidates for its gain, and nothing above has
-    // changed the mesh since: the same candidates, the same choice.)
-    if (weighedFor_ == t && strategy_.weighPoints) return insertWeighed(t, candidates_, weighedChoice_);
+    // changed the mesh: the same candidates, the same choice.)
+    if (weighed != kNotWeighed && strategy_.weighPoints) return insertWeighed(t, candidates_, weighed);
     slicePoints(t, candidates_);
     return insertSparingSegments(t, candidates_, true);
   }
@@ -1851,12 +1850,13 @@ void Refiner::polishRound(bool removeAfterMerging) {
 // triangles the best of its slice's points that spares the segments would take away, less
 // those it would make (badChange), at least -1 (also where no point counts); 1 for a
 // subsegment split and for a small angle (boundary and quality repairs settle their triangle).
-int Refiner::repairGain(uint32_t t, Corner c) {
+// `weighed`, if given, gets the candidate chosen when t's candidates were weighed (see repair).
+int Refiner::repairGain(uint32_t t, Corner c, size_t* weighed) {
   if (!c.large || T_.isFixed(3 * t + uint32_t((c.k + 1) % 3))) return 1;
   slicePoints(t, candidates_);
   int fewest = 0;
   const size_t chosen = weighCandidates(t, candidates_, fewest);
-  weighedFor_ = t, weighedChoice_ = chosen;
+  if (weighed) *weighed = chosen;
   if (chosen == candidates_.size()) return -1;
   return -std::min(fewest, 1);
 }
@@ -1894,9 +1894,9 @@ StepResult Refiner::repairAll() {
     if (!T_.inDomain(t) || shortestEdge2(t) != entry.size) continue;
     Corner c = worstCorner(t);
     if (c.k < 0) continue;
-    weighedFor_ = kNone;
+    size_t weighed = kNotWeighed;
     if (byGain) {
-      int gain = repairGain(t, c);
+      int gain = repairGain(t, c, &weighed);
       if (gain < entry.gain) {
         queue.push({gain, entry.size, t});
         continue;
@@ -1904,7 +1904,7 @@ StepResult Refiner::repairAll() {
     }
     touched_.clear();
     T_.touched = &touched_;
-    bool changed = repair(t, c);
+    bool changed = repair(t, c, weighed);
     T_.touched = nullptr;
     if (!changed) continue;  // left for the certificate to count
     std::sort(touched_.begin(), touched_.end());
@@ -2049,9 +2049,9 @@ bool Refiner::mergePoint(uint32_t u, uint32_t w, double* out) {
       e = T_.opp[prev(e)];
     } while (e != e0);
   }
-  double centre[2];
   if (!linkLeavesRoom()) return linkEdges_.size() < kMergeLinkEdges;
   clipToLinkSlabs(strictMax_);
+  double centre[2];
   if (!clipCentroid(centre)) return linkEdges_.size() < kMergeLinkEdges;
   out[0] = centre[0], out[1] = centre[1];
   return true;
