@@ -1,0 +1,83 @@
+// Every tuning constant of refinement, each with one line of why. How each value was chosen,
+// and what the others tried gave, is in docs/TUNING.md.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "../portable_math.h"
+
+namespace acutemesh::detail {
+
+constexpr double kDegree = M_PI / 180.0;
+
+// --- The target ---------------------------------------------------------------------------
+// Quality refinement aims this many degrees over the minimum angle, so that rounding cannot
+// leave a new triangle just under it.
+constexpr double kQualityRoom = 0.5;
+// Exact feet: an angle at a foot vertex within this (as a cosine) of 90 degrees counts as
+// right; the double nearest a tilted segment's exact foot can be hundreds of ulps from it.
+constexpr double kFootSlack = 1e-7;
+// No edge shorter than 2^-kMinEdgeBits of the input's extent, nor than 2^-kMinEdgeUlpBits of
+// its largest coordinate: past that, refinement would spiral into rounding noise.
+constexpr int kMinEdgeBits = 24, kMinEdgeUlpBits = 42;
+// Minimum angles above this need not terminate; a run that wanders is made again to it.
+constexpr double kSureMinAngle = 40;
+
+// --- Budgets --------------------------------------------------------------------------------
+// The default Steiner budget: this many per input vertex, at least kSteinerAtLeast.
+constexpr double kSteinerPerInputVertex = 50, kSteinerAtLeast = 20000;
+// An area bound reserves room for the vertices it expects, but never more than this up front.
+constexpr uint32_t kReservedVerticesAtMost = 1u << 21;
+
+// --- Steiner points (seed 2.1) --------------------------------------------------------------
+// A cavity examined for encroachment stops growing past this many triangles.
+constexpr size_t kCavityExamined = 256;
+// The best few candidate points are weighed; later ones rarely win.
+constexpr size_t kSliceTries = 3;
+// The Voronoi walk for candidates visits at most this many triangles.
+constexpr size_t kVoronoiWalk = 64;
+
+// --- Boundary -----------------------------------------------------------------------------
+// Non-obtuse: passes of cutting slivers at altitude feet before the fans.
+constexpr int kCutAtFeetPasses = 4;
+
+// --- Corner fans --------------------------------------------------------------------------
+// Input corners with a domain sector under this get a fan (non-obtuse: a right triangle
+// settles a wider tip).
+constexpr double kSmallAngle = 60 * kDegree, kSmallAngleNonObtuse = 30 * kDegree;
+// A fan's isosceles triangles have apex angles of at most this.
+constexpr double kFanAngle = 80 * kDegree;
+// A fan's radius, as a fraction of its corner's distance to its link: under half keeps fans
+// apart and their triangles Delaunay.
+constexpr double kFanFactor = 0.49;
+// Wide fans (Strategy::wideFans) grow to this fraction of the distance to the link ...
+constexpr double kWideFan = 0.8;
+// ... keeping the disks of two fans this fraction of their distance apart ...
+constexpr double kFanGap = 0.98;
+// ... and a fan at a corner over kYieldRatio times as wide yields 1 - kYield of its radius to
+// the smaller one, whose room saves more points.
+constexpr double kYieldRatio = 4, kYield = 0.2;
+
+// --- Polish -------------------------------------------------------------------------------
+// Improvement rounds at most, and removal passes per removal step at most.
+constexpr int kPolishRounds = 12, kRemovalPasses = 12;
+// A round must take out this fraction of the Steiner points for another to run ...
+constexpr double kPolishGain = 0.005;
+// ... except below this many points, where rounds are cheap: they go on until two in a row
+// gain nothing (non-obtuse: all kPolishRounds). From here on rounds run in two halves at once.
+constexpr size_t kSmallPolish = 400;
+// Rounds in halves gain for longer: from kHalvesGainFrom points a round must take out
+// kHalvesGain, and from kLargeRoundFrom points kLargeGain, to go on.
+constexpr size_t kHalvesGainFrom = 700;
+constexpr double kHalvesGain = 0.02;
+constexpr size_t kLargeRoundFrom = 1000;
+constexpr double kLargeGain = 0.03;
+// A pair whose joint link has this many edges or more is merged only where one point fits
+// without moving its neighbours: such tries almost never succeed.
+constexpr size_t kMergeLinkEdges = 11;
+
+static_assert(kHalvesGainFrom >= kSmallPolish && kLargeRoundFrom >= kHalvesGainFrom,
+              "the rounds in halves start at kSmallPolish and run the larger meshes' round");
+
+}  // namespace acutemesh::detail

@@ -1,0 +1,161 @@
+#include "polish.h"
+
+#include <algorithm>
+
+#include "refiner.h"
+#include "threads.h"
+
+namespace acutemesh::detail {
+
+void Polish::run() {
+  const Target& target = job_.target;
+  if (!target.boundsLargest() || target.anyMissed(s_)) return;
+  const size_t inputVertices = job_.input.vertexCount();
+  int idleRounds = 0;  // the last rounds in a row that took out no point
+  for (int r = 0; r < kPolishRounds && !job_.budget.stop(); ++r) {
+    size_t before = s_.liveSteiner(inputVertices);
+    RefineState saved = s_;
+    if (before >= kSmallPolish)
+      roundInHalves(r);
+    else
+      round(false);
+    StepResult result = repair_.repairAll();
+    size_t after = s_.liveSteiner(inputVertices);
+    if (!result.ok() || target.anyMissed(s_) || after > before) {
+      s_ = std::move(saved);
+      return;
+    }
+    idleRounds = after == before ? idleRounds + 1 : 0;
+    const bool small = after < kSmallPolish;
+    if (small && target.nonObtuse) continue;  // all the rounds: they are cheap there
+    const double gain = before >= kLargeRoundFrom  ? kLargeGain
+                        : before >= kHalvesGainFrom ? kHalvesGain
+                                                    : kPolishGain;
+    if (small ? idleRounds == 2 : double(before - after) < gain * double(before)) return;
+  }
+}
+
+// Smoothing makes the room removals and merges need: a sweep before each removal and merge
+// step. Small meshes: two sweeps before the removals (a sweep moves each vertex against its
+// neighbours' old places, the second settles most of that), and two merge passes. Larger ones
+// (removeAfterMerging; the rounds in halves): one merge pass, then the removals again, as a
+// merge changes the stars around it and removals, several times cheaper a success than
+// merges, find more there.
+void Polish::round(bool removeAfterMerging) {
+  if (!removeAfterMerging) {
+    smooth();
+    smooth();
+    reduce_.removeSteinerPoints();
+    smooth();
+    reduce_.mergeSteinerPoints(nullptr, 2);
+    return;
+  }
+  smooth();
+  reduce_.removeSteinerPoints();
+  smooth();
+  reduce_.mergeSteinerPoints();
+  smooth();
+  reduce_.removeSteinerPoints();
+}
+
+// Moves every free vertex to the middle of the room its link leaves, and every segment vertex
+// along its segment likewise: points with room to spare let more of their neighbours go in
+// the next removal pass.
+void Polish::smooth() {
+  const Scope& scope = reduce_.scope;
+  for (uint32_t v = uint32_t(job_.input.vertexCount()); v < s_.T.vertexCount(); ++v) {
+    if (s_.T.vertexEdge[v] == kNone || (s_.role[v] != kFree && s_.role[v] != kOnSegment) ||
+        !scope.owns(v))
+      continue;
+    if (relocation_.move(v)) {
+      relocation_.settle(v);
+      scope.record({Step::Move, v, kNone, kNone, s_.P(v)[0], s_.P(v)[1]});
+    }
+  }
+}
+
+// The Steiner vertices on either side of their median x (y in odd rounds), those with a
+// neighbour across it excepted, are smoothed, removed and merged as in a round of their own,
+// one half here and the other on a copy of the state, on a second thread where there is one
+// (the same steps either way). The copy's steps are then made again here in order (replay),
+// each checked anew, and the vertices along the middle, with the points the merges made, get
+// one removal and one merge pass.
+void Polish::roundInHalves(int r) {
+  const int axis = r % 2;
+  const Triangulation& T = s_.T;
+  const uint32_t n = T.vertexCount();
+  std::vector<double> at;
+  for (uint32_t v = uint32_t(job_.input.vertexCount()); v < n; ++v)
+    if (T.vertexEdge[v] != kNone && (s_.role[v] == kFree || s_.role[v] == kOnSegment))
+      at.push_back(s_.P(v)[axis]);
+  if (at.empty()) return;
+  std::nth_element(at.begin(), at.begin() + at.size() / 2, at.end());
+  const double middle = at[at.size() / 2];
+  std::vector<uint8_t> mine[2] = {std::vector<uint8_t>(n, 0), std::vector<uint8_t>(n, 0)};
+  std::vector<uint8_t> along(n, 0);  // the vertices with a neighbour across the middle
+  for (uint32_t v = 0; v < n; ++v) {
+    if (T.vertexEdge[v] == kNone) continue;
+    const bool second = s_.P(v)[axis] >= middle;
+    bool across = false;
+    uint32_t e0 = T.vertexEdge[v], e = e0;
+    do {
+      uint32_t w = T.tri[next(e)];
+      across |= w != kGhost && (s_.P(w)[axis] >= middle) != second;
+      e = T.opp[prev(e)];
+    } while (e != e0);
+    mine[second][v] = !across;
+    along[v] = across;
+  }
+  RefineState copy = s_;
+  RunLimits quiet;  // (its limit is never asked: a round makes no repairs)
+  quiet.reportProgress = false;
+  Job otherJob = job_;
+  otherJob.limits = &quiet;
+  Refiner other(copy, otherJob);
+  std::vector<Step> log;
+  other.reduce().scope = {&mine[1], &log};
+  reduce_.scope = {&mine[0], nullptr};
+  auto secondHalf = [&] { other.polishing().round(true); };
+#ifdef ACUTEMESH_THREADS
+  if (threadsFor(job_.options) > 1) {
+    std::thread helper(secondHalf);
+    round(true);
+    helper.join();
+  } else {
+    round(true);
+    secondHalf();
+  }
+#else
+  round(true);
+  secondHalf();
+#endif
+  reduce_.scope = {};
+  replay(log, n, copy.T.vertexCount());
+  along.resize(T.vertexCount(), 1);  // and the points the merges made
+  reduce_.removeSteinerPoints(&along, 1);
+  reduce_.mergeSteinerPoints(&along);
+}
+
+// A move if the vertex's star still meets the target there, a removal or merge if it works
+// now. The copy's points from firstNew on (up to made) map to those made here. (A step near
+// the middle may fail where the other half changed things.)
+void Polish::replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t made) {
+  std::vector<uint32_t> here(made, kNone);
+  for (uint32_t v = 0; v < firstNew; ++v) here[v] = v;
+  for (const Step& step : log) {
+    const uint32_t a = here[step.u];
+    if (a == kNone || s_.T.vertexEdge[a] == kNone) continue;
+    if (step.kind == Step::Move) {
+      const double to[2] = {step.x, step.y};
+      relocation_.tryMoveTo(a, to);
+    } else if (step.kind == Step::Remove) {
+      reduce_.removePoint(a);
+    } else {
+      const uint32_t b = here[step.w];
+      if (b != kNone && s_.role[a] == s_.role[b] && reduce_.mergePair(a, b))
+        here[step.made] = s_.T.vertexCount() - 1;
+    }
+  }
+}
+
+}  // namespace acutemesh::detail

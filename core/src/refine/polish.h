@@ -1,0 +1,43 @@
+// Improvement rounds on a mesh that meets the target, while they take out enough Steiner
+// points: smoothing (every Steiner vertex to the middle of the room its link leaves), which
+// makes room for removals and merges, then removal and merging (reduce.h). On larger meshes a
+// round runs in two halves at once, one on a copy of the state, whose steps are then made
+// again here in order, so that every build and thread count makes the same mesh.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "job.h"
+#include "reduce.h"
+#include "relocate.h"
+#include "repair.h"
+#include "state.h"
+
+namespace acutemesh::detail {
+
+class Polish {
+ public:
+  Polish(RefineState& s, const Job& job, Relocation& relocation, Reduce& reduce, Repair& repair)
+      : s_(s), job_(job), relocation_(relocation), reduce_(reduce), repair_(repair) {}
+
+  // Rounds until one gains too little (kPolishGain and its kin, params.h). A round that ends
+  // short of the target (a budget ran out) or with more points than it started with is undone.
+  void run();
+  // One round: smoothing, removals, merges. removeAfterMerging: the larger meshes' round (see
+  // polish.cpp).
+  void round(bool removeAfterMerging);
+
+ private:
+  void smooth();
+  void roundInHalves(int round);
+  void replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t made);
+
+  RefineState& s_;
+  const Job& job_;
+  Relocation& relocation_;
+  Reduce& reduce_;
+  Repair& repair_;
+};
+
+}  // namespace acutemesh::detail

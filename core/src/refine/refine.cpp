@@ -1,0 +1,76 @@
+// refine(): refinement toward options' target, with the fallbacks that keep every run ending
+// in the best certified mesh it can:
+//  - a bound below 90 degrees is best effort: if no strategy reaches it with half the Steiner
+//    budget, the input is meshed acute from the start again, so a run that falls short still
+//    ends acute and certified (TargetNotMet) rather than half refined;
+//  - a minimum angle above kSureMinAngle, where Delaunay refinement need not terminate: a run
+//    that uses half the budget is made again to kSureMinAngle;
+//  - exact feet (non-obtuse): should some triangle around them not be right at their exact
+//    positions after all, the run is made again without them; not when a budget stopped it
+//    (the certificate counts what is left).
+#include <algorithm>
+
+#include "../build.h"
+#include "geometry.h"
+#include "params.h"
+#include "strategies.h"
+
+namespace acutemesh::detail {
+namespace {
+
+// One refinement of `start` into T, with freeVertex and exact as refine() leaves them.
+RefineOutcome refineOnce(const RefineState& start, const Pslg& input, const Options& options,
+                         const Budget& budget, uint32_t steinerCap, Triangulation& T,
+                         std::vector<uint8_t>& freeVertex, std::vector<ExactVertex>& exact) {
+  RefineState best;
+  RefineOutcome outcome =
+      refineWithStrategies(start, input, options, budget, steinerCap, best, exact);
+  best.markFree(freeVertex);
+  T = std::move(best.T);
+  return outcome;
+}
+
+}  // namespace
+
+StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
+                  const Budget& budget, std::vector<uint8_t>& freeVertex,
+                  std::vector<ExactVertex>& exact) {
+  exact.clear();
+  const RefineState start = RefineState::start(std::move(T), input.vertexCount());
+  if (options.exactFeet && options.mode == Mode::NonObtuse) {
+    RefineOutcome o = refineOnce(start, input, options, budget, 0, T, freeVertex, exact);
+    if (o.feetHeld || !o.met || !o.result.ok() || budget.stop()) return o.result;
+    Options plain = options;
+    plain.exactFeet = false;
+    return refineOnce(start, input, plain, budget, 0, T, freeVertex, exact).result;
+  }
+  const bool acuteBelow90 = options.mode == Mode::Acute && options.maxAngle < 90;
+  const bool qualityBeyondSure = options.mode == Mode::Quality && options.minAngle > kSureMinAngle;
+  if (!acuteBelow90 && !qualityBeyondSure)
+    return refineOnce(start, input, options, budget, 0, T, freeVertex, exact).result;
+  const uint32_t half = uint32_t(std::clamp(
+      steinerBudget(input, options, domainArea(start.T, options)) / 2, 1.0, double(kMaxVertices)));
+  RefineOutcome o = refineOnce(start, input, options, budget, half, T, freeVertex, exact);
+  if (o.result.status == Status::Cancelled || budget.stop()) return o.result;
+  Options sure = options;
+  if (acuteBelow90) {
+    if (o.met) return o.result;
+    sure.maxAngle = 90;
+    o = refineOnce(start, input, sure, budget, 0, T, freeVertex, exact);
+    if (!o.met) return o.result;
+    return {Status::TargetNotMet,
+            "the bound of " + degreesText(options.maxAngle) + " was not reached; the mesh is acute"};
+  }
+  // Quality: a run that ended short of the target for lack of points (not for input angles
+  // below it, which no point mends) has been wandering.
+  if (T.vertexCount() < start.T.vertexCount() + half) return o.result;
+  sure.minAngle = kSureMinAngle;
+  o = refineOnce(start, input, sure, budget, 0, T, freeVertex, exact);
+  if (o.result.status == Status::Cancelled) return o.result;
+  return {Status::TargetNotMet, "a minimum angle of " + degreesText(options.minAngle) +
+                                    " was not reached with half the Steiner budget; the mesh is "
+                                    "refined to " + degreesText(kSureMinAngle) +
+                                    (o.result.ok() ? "" : " (" + o.result.message + ")")};
+}
+
+}  // namespace acutemesh::detail

@@ -1,0 +1,27 @@
+#include "refiner.h"
+
+namespace acutemesh::detail {
+
+StepResult Refiner::run() {
+  const Target& target = job_.target;
+  if (target.nonObtuse && job_.strategy.cutAtFeetFirst) boundary_.cutAtFeet();
+  if (target.boundsLargest()) fans_.buildAll();
+  StepResult result = repair_.repairAll();
+  // Acute and non-obtuse, where the point count is the score: remove what is not needed. The
+  // fans have done their work once the target is met: their points may go too, as long as
+  // what fills their place meets the target. Putting a vertex back can differ from its old
+  // star where vertices are cocircular, so whatever that spoilt is repaired again.
+  if (result.ok() && target.boundsLargest()) {
+    s_.releaseChords();
+    for (size_t v = 0; v < s_.role.size(); ++v) {
+      if (s_.role[v] == kArc) s_.role[v] = kFree;
+      s_.fanCenter[v] = kNone;
+    }
+    if (!target.anyMissed(s_)) reduce_.removeSteinerPoints();
+    result = repair_.repairAll();
+  }
+  s_.releaseChords();  // (when a budget cut the run short)
+  return result;
+}
+
+}  // namespace acutemesh::detail

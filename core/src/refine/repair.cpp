@@ -1,0 +1,143 @@
+#include "repair.h"
+
+#include <algorithm>
+
+#include "slice.h"
+
+namespace acutemesh::detail {
+
+bool Repair::repair(uint32_t t, Corner c, size_t weighed) {
+  Triangulation& T = s_.T;
+  const Target& target = job_.target;
+  const Strategy& strategy = job_.strategy;
+  // Moving vertices (relocation, the removal pass) can leave edges that are not locally
+  // Delaunay; a triangle standing on one is flipped away first, since the search for a new
+  // point below assumes empty circumcircles.
+  flips_.assign({3 * t, 3 * t + 1, 3 * t + 2});
+  size_t before = touched_.size();
+  T.legalize(flips_);
+  if (touched_.size() > before) return true;
+  if (strategy.lazyFans && target.boundsLargest()) {
+    for (int k = 0; k < 3; ++k) {
+      uint32_t v = T.tri[3 * t + k];
+      if (v >= s_.fanRadius.size()) continue;
+      if (double r = fans_.radiusFor(v, true)) {
+        fans_.build(v, r);
+        return true;
+      }
+    }
+  }
+  if (!c.area) {
+    for (int k = 0; k < 3; ++k) {
+      uint32_t a = T.tri[3 * t + k];
+      if (relocation_.move(a)) {
+        uint32_t e0 = T.vertexEdge[a], e = e0;
+        do {
+          touched_.push_back(e / 3);
+          for (uint32_t f = 3 * (e / 3); f < 3 * (e / 3) + 3; ++f) touched_.push_back(T.opp[f] / 3);
+          e = T.opp[prev(e)];
+        } while (e != e0);
+        relocation_.legalizeStar(a);
+        return true;
+      }
+    }
+  }
+  if (c.large) {
+    // The edge opposite the large angle: if it is a subsegment, the apex encroaches it.
+    uint32_t opposite = 3 * t + uint32_t((c.k + 1) % 3);
+    if (strategy.weighPoints && T.isFixed(opposite) && !s_.isChord(opposite))
+      return boundary_.splitWeighed(opposite, T.tri[3 * t + c.k]);
+    if (target.nonObtuse && strategy.footOnSegments && T.isFixed(opposite))
+      return boundary_.splitAtFoot(t, c.k);
+    if (T.isFixed(opposite)) return boundary_.splitSubsegment(opposite);
+    // The farthest point of the slice; but one that encroaches a subsegment would split it,
+    // and next to a sliver each split starts a chain of feet across it: a point of the slice
+    // that encroaches nothing goes first, if there is one, and of those the one that leaves
+    // the fewest bad triangles. (Unless repairAll has just weighed t's candidates for its
+    // gain, and nothing above has changed the mesh: the same candidates, the same choice.)
+    if (weighed != kNotWeighed && strategy.weighPoints)
+      return insertion_.insertWeighed(t, candidates_, weighed);
+    slicePoints(s_, t, strategy.weighPoints, candidates_);
+    return insertion_.insertSparingSegments(t, candidates_, true);
+  }
+  if (!c.area) {
+    qualityPoints(s_, t, target.cosQuality, candidates_);
+    return insertion_.insertSparingSegments(t, candidates_, false);
+  }
+  const uint32_t* v = &T.tri[3 * t];
+  double x[2];
+  circumcenter(s_.P(v[0]), s_.P(v[1]), s_.P(v[2]), x);
+  return insertion_.insertSteiner(t, x);
+}
+
+// The gain of repairing t (whose worst corner is c) for the FewestBadFirst order: the bad
+// triangles the best of its slice's points that spares the segments would take away, less
+// those it would make, at least -1 (also where no point counts); 1 for a subsegment split and
+// for a small angle (boundary and quality repairs settle their triangle). `weighed`, if
+// given, gets the candidate chosen.
+int Repair::repairGain(uint32_t t, Corner c, size_t* weighed) {
+  if (!c.large || s_.T.isFixed(3 * t + uint32_t((c.k + 1) % 3))) return 1;
+  slicePoints(s_, t, job_.strategy.weighPoints, candidates_);
+  int fewest = 0;
+  const size_t chosen = insertion_.weigh(t, candidates_, fewest);
+  if (weighed) *weighed = chosen;
+  if (chosen == candidates_.size()) return -1;
+  return -std::min(fewest, 1);
+}
+
+// Entries are re-checked when popped (a triangle may have changed); in the fewest-bad-first
+// order an entry whose gain has dropped since (its neighbours changed) goes back with its new
+// gain.
+StepResult Repair::repairAll() {
+  Triangulation& T = s_.T;
+  const Target& target = job_.target;
+  const Options& options = job_.options;
+  RepairQueue& queue = queue_;
+  using Order = RepairQueue::Order;
+  const bool byGain = job_.strategy.fewestBadFirst && target.boundsLargest() && options.maxArea <= 0;
+  queue.reset(options.maxArea > 0 ? Order::FactorsOfTwo : byGain ? Order::FewestBadFirst : Order::Largest);
+  auto push = [&](uint32_t t) {
+    if (!T.inDomain(t)) return;
+    Corner c = target.worstCorner(s_, t);
+    if (c.k >= 0) queue.push({byGain ? repairGain(t, c) : 0, shortestEdge2(T, t), t});
+  };
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) push(t);
+  uint32_t steps = 0;
+  RepairQueue::Entry entry;
+  while (queue.pop(entry)) {
+    if ((++steps & 255) == 0) {
+      if (job_.budget.stop())
+        return {job_.budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
+                "time limit reached before every triangle met the target"};
+      if (job_.reportsProgress() && (steps & 4095) == 0)
+        options.progress({"refine", -1, T.vertexCount()});
+    }
+    if (job_.limits->reached(T.vertexCount()))
+      return {Status::TargetNotMet, "Steiner point budget used up before every triangle met "
+                                    "the target"};
+    const uint32_t t = entry.t;
+    if (!T.inDomain(t) || shortestEdge2(T, t) != entry.size) continue;
+    Corner c = target.worstCorner(s_, t);
+    if (c.k < 0) continue;
+    size_t weighed = kNotWeighed;
+    if (byGain) {
+      int gain = repairGain(t, c, &weighed);
+      if (gain < entry.gain) {
+        queue.push({gain, entry.size, t});
+        continue;
+      }
+    }
+    touched_.clear();
+    T.touched = &touched_;
+    bool changed = repair(t, c, weighed);
+    T.touched = nullptr;
+    if (!changed) continue;  // left for the certificate to count
+    std::sort(touched_.begin(), touched_.end());
+    touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+    for (uint32_t u : touched_) push(u);
+    push(t);
+  }
+  return {};
+}
+
+}  // namespace acutemesh::detail

@@ -1,0 +1,47 @@
+#include "state.h"
+
+#include <algorithm>
+
+namespace acutemesh::detail {
+
+RefineState RefineState::start(Triangulation T, size_t inputVertices) {
+  RefineState s;
+  s.T = std::move(T);
+  s.role.assign(s.T.vertexCount(), kOnSegment);
+  std::fill(s.role.begin(), s.role.begin() + inputVertices, kInput);
+  s.fanCenter.assign(s.T.vertexCount(), kNone);
+  s.footOf.assign(s.T.vertexCount(), kNone);
+  s.fanRadius.assign(inputVertices, 0);
+  Triangulation& t = s.T;
+  for (uint32_t e = 0; e < 3 * t.triangleSlots(); ++e)
+    if (!t.isFree(e / 3) && t.inside[e / 3] && !t.isFixed(e) && !t.inside[t.opp[e] / 3])
+      t.fixEdge(e, 0);
+  return s;
+}
+
+void RefineState::reserve(size_t vertices) {
+  T.reserveCapacity(vertices, 2 * vertices + 16);
+  role.reserve(vertices);
+  fanCenter.reserve(vertices);
+  footOf.reserve(vertices);
+}
+
+void RefineState::releaseChords() {
+  for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e)
+    if (!T.isFree(e / 3) && T.isFixed(e) && !T.isGhost(e / 3) && isChord(e)) T.unfixEdge(e);
+}
+
+size_t RefineState::liveSteiner(size_t inputVertices) const {
+  size_t n = 0;
+  for (uint32_t v = uint32_t(inputVertices); v < T.vertexCount(); ++v)
+    n += T.vertexEdge[v] != kNone;
+  return n;
+}
+
+void RefineState::markFree(std::vector<uint8_t>& out) const {
+  out.resize(role.size());
+  for (size_t v = 0; v < role.size(); ++v)
+    out[v] = role[v] == kFree || role[v] == kOnHull || role[v] == kArc;
+}
+
+}  // namespace acutemesh::detail

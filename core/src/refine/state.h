@@ -1,0 +1,69 @@
+// The refinement state: the triangulation and what refinement knows of each vertex. It is one
+// value: a strategy's run, a round that may be undone and the second half of a round in halves
+// each work on a copy of it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "../triangulation.h"
+#include "acutemesh/acutemesh.h"
+
+namespace acutemesh::detail {
+
+// kOnHull: on a boundary edge no segment lies on (hull of a point set); kept in place like
+// kOnSegment, reported like kFree (no input segment holds it). kArc: on the arc of a corner
+// fan (fans.h); never moved while refinement runs, an ordinary free Steiner point once the
+// target is met.
+enum VertexRole : uint8_t { kInput, kOnSegment, kOnHull, kFree, kArc };
+
+struct RefineState {
+  // The triangulation, with T.inside marking the domain.
+  Triangulation T;
+  std::vector<uint8_t> role;  // per vertex: a VertexRole
+  // Per vertex: the input vertex whose corner fan it belongs to (on its arc, or where the fan
+  // meets a segment), else kNone. Per input vertex: its fan's radius (0: none).
+  std::vector<uint32_t> fanCenter;
+  std::vector<double> fanRadius;
+  // Per vertex (Options::exactFeet): for a segment vertex standing for the exact altitude foot
+  // of a vertex, that vertex (exact_feet.h), else kNone.
+  std::vector<uint32_t> footOf;
+
+  // The state refinement starts from: T (the domain marked in T.inside) with every vertex
+  // past the input's on a segment (the CDT's crossing points), and the domain's edges that no
+  // segment lies on (a point set's hull) fixed, so that the boundary rule applies to them.
+  static RefineState start(Triangulation T, size_t inputVertices);
+
+  const double* P(uint32_t v) const { return T.point(v); }
+  uint32_t addVertex(const double* p, VertexRole r, uint32_t fan = kNone) {
+    role.push_back(r);
+    fanCenter.push_back(fan);
+    footOf.push_back(kNone);
+    return T.addVertex(p[0], p[1]);
+  }
+  // Takes back the vertex just added, which no triangle uses.
+  void dropLastVertex() {
+    T.pts.resize(T.pts.size() - 2);
+    T.vertexEdge.pop_back();
+    role.pop_back();
+    fanCenter.pop_back();
+    footOf.pop_back();
+  }
+  // A chord of a corner fan: a fixed edge between two points of the same fan.
+  bool isChord(uint32_t e) const {
+    uint32_t c = fanCenter[T.tri[e]];
+    return c != kNone && c == fanCenter[T.tri[next(e)]];
+  }
+  // A fixed edge on a segment or the hull (not a chord).
+  bool isSubsegment(uint32_t e) const { return T.isFixed(e) && !isChord(e); }
+  // Reserves room for about `vertices` vertices in all (refinement to an area bound).
+  void reserve(size_t vertices);
+  // Chords are fixed only while refinement runs; the output knows them as plain edges.
+  void releaseChords();
+  // Steiner points in the mesh (vertexCount() also counts those removed).
+  size_t liveSteiner(size_t inputVertices) const;
+  // Per vertex: 1 for the Steiner points on no input segment (Mesh::vertexKind kFreeVertex).
+  void markFree(std::vector<uint8_t>& out) const;
+};
+
+}  // namespace acutemesh::detail

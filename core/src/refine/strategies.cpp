@@ -1,0 +1,310 @@
+#include "strategies.h"
+
+#include <algorithm>
+#include <memory>
+#include <mutex>
+
+#include "geometry.h"
+#include "exact_feet.h"
+#include "refiner.h"
+#include "threads.h"
+
+namespace acutemesh::detail {
+
+double steinerBudget(const Pslg& input, const Options& options, double area) {
+  if (options.maxSteiner) return options.maxSteiner;
+  double cap = std::max(kSteinerAtLeast, kSteinerPerInputVertex * double(input.vertexCount()));
+  return options.maxArea > 0 ? cap + 4 * area / options.maxArea : cap;
+}
+
+namespace {
+
+// The strategies for a mode, in the order they run (see docs/TUNING.md for what each saves).
+std::vector<Strategy> strategiesFor(const Options& options) {
+  std::vector<Strategy> strategies = {Strategy{}};
+  if (options.mode == Mode::NonObtuse) {
+    // Feet on segments; feet first with lazy fans; plain fans. Each with exact slides, then
+    // with sampled ones: the exact ones usually win, and run first their count caps the rest.
+    Strategy feet, cutFirst, plain;
+    feet.footOnSegments = true;
+    cutFirst.cutAtFeetFirst = cutFirst.footOnSegments = cutFirst.lazyFans = true;
+    strategies.clear();
+    for (bool exact : {true, false})
+      for (Strategy s : {feet, cutFirst, plain}) {
+        s.exactSlide = exact;
+        strategies.push_back(s);
+      }
+  } else if (options.mode == Mode::Acute) {
+    Strategy lazy;
+    lazy.lazyFans = true;
+    strategies.push_back(lazy);
+    // Both again with the farthest point of the slice whatever it encroaches, as fallbacks:
+    // sparing the segments can grade into a narrow wedge and end a sliver short.
+    for (size_t i = 0; i < 2; ++i) {
+      strategies.push_back(strategies[i]);
+      strategies.back().weighPoints = false;
+      strategies.back().fallback = true;
+    }
+  }
+  if (options.mode == Mode::NonObtuse || options.mode == Mode::Acute) {
+    // First of all the first strategy in the fewest-bad-first order: it often wins, and its
+    // count caps the others early.
+    Strategy first = strategies.front();
+    first.fewestBadFirst = true;
+    strategies.insert(strategies.begin(), first);
+  }
+  if (options.mode == Mode::Acute) {
+    // Wide fans in every strategy, and should none of them meet the target (wide fans can
+    // crowd a tiny corner), all of them again with the usual fans as fallbacks. Not below 90
+    // degrees, where a bound no strategy reaches is best effort anyway (refine() meshes to 90
+    // then), and each fallback would run until half the Steiner budget is spent.
+    const size_t count = strategies.size();
+    for (size_t i = 0; i < count; ++i) {
+      if (options.maxAngle >= 90) {
+        strategies.push_back(strategies[i]);
+        strategies.back().fallback = true;
+      }
+      strategies[i].wideFans = true;
+    }
+  }
+  return strategies;
+}
+
+// The vertex count at which a run stops, for a Steiner cap (0: none) and the budget.
+struct SteinerLimit {
+  uint32_t startVertices;
+  double budget;  // steinerBudget's
+  uint32_t with(uint32_t steinerCap) const {
+    double cap = steinerCap ? std::min(budget, double(steinerCap)) : budget;
+    return uint32_t(std::min(double(startVertices) + cap, double(kMaxVertices)));
+  }
+};
+
+// One strategy's run on its own copy of the start state.
+class StrategyRun {
+ public:
+  StrategyRun() = default;
+  StrategyRun(const RefineState& start, const Job& job, uint32_t steinerLimit)
+      : box_(std::make_unique<Box>(start, job)) {
+    box_->limits.steinerLimit = steinerLimit;
+    const Options& options = job.options;
+    if (options.maxArea > 0) {
+      // About one vertex per two triangles of a third of the bound's area, within the limit,
+      // and no more than kReservedVerticesAtMost more: a bound far too small for the time
+      // limit must not reserve gigabytes up front.
+      const double area = domainArea(start.T, options), n = start.T.vertexCount();
+      box_->state.reserve(size_t(std::min(
+          {double(steinerLimit), n + 1.6 * area / options.maxArea, n + double(kReservedVerticesAtMost)})));
+    }
+  }
+  void go() {
+    result = box_->refiner.run();
+    met = result.ok() && !box_->job.target.anyMissed(box_->state);
+  }
+  bool exists() const { return box_ != nullptr; }
+  RefineState& state() { return box_->state; }
+  const RefineState& state() const { return box_->state; }
+  RunLimits& limits() { return box_->limits; }
+  Refiner& refiner() { return box_->refiner; }
+  size_t liveSteiner() const { return box_->state.liveSteiner(box_->job.input.vertexCount()); }
+
+  StepResult result;
+  bool met = false;
+
+ private:
+  // The state, the run's limits and its job, where the refiner can keep referring to them.
+  struct Box {
+    Box(const RefineState& start, const Job& j) : state(start), job(j), refiner(state, withLimits()) {}
+    const Job& withLimits() {
+      job.limits = &limits;
+      return job;
+    }
+    RefineState state;
+    RunLimits limits;
+    Job job;
+    Refiner refiner;
+  };
+  std::unique_ptr<Box> box_;
+};
+
+// Which run refineWithStrategies keeps, the runs considered one after another: the first,
+// unless a later one meets the target with fewer Steiner points than the best so far. A later
+// run stops once it has made as many points as the best so far (cap()); none runs once that
+// leaves it no room, or the budget is out (done()).
+struct StrategyChoice {
+  StrategyChoice(const RefineState& start, const Budget& budget, uint32_t steinerCap)
+      : startVertices(start.T.vertexCount()), budget(budget), steinerCap(steinerCap) {}
+  uint32_t cap() const {
+    if (!best.met) return steinerCap;
+    return uint32_t(best.state().T.vertexCount() - startVertices) - 1;
+  }
+  bool done() const {
+    if (best.exists() && (best.result.status == Status::Cancelled || budget.stop())) return true;
+    return best.met && best.state().T.vertexCount() - startVertices <= 1;
+  }
+  void consider(StrategyRun&& run) {
+    if (!best.exists() || (run.met && (!best.met || run.liveSteiner() < best.liveSteiner())))
+      best = std::move(run);
+  }
+  const size_t startVertices;
+  const Budget& budget;
+  const uint32_t steinerCap;
+  StrategyRun best;
+};
+
+// The job of strategy i: the same input, options, target and budget for every run.
+struct Jobs {
+  const Pslg& input;
+  const Options& options;
+  const Target& target;
+  const Budget& budget;
+  const std::vector<Strategy>& strategies;
+  double minEdge2;
+  Job operator()(size_t i) const {
+    return {input, options, target, strategies[i], budget, nullptr, minEdge2};
+  }
+};
+
+#ifdef ACUTEMESH_THREADS
+// Runs strategies [0, count) on threads, the calling one among them, and hands them to the
+// choice in order: with the same result as running them one after another (so every build,
+// threads or not, makes the same mesh). A run starts before those ahead of it are done, with
+// only the budget's cap; once they are, it gets the cap it would have had (StrategyChoice::cap)
+// through its SteinerGate. Had it already checked a vertex count at or over that cap, it would
+// have stopped there: it is stopped now and does not count. (The new limit is stored before
+// the last count checked is read: a check at or over it either shows in that count or sees
+// the new limit and stops the run.) Otherwise it has gone just as it would have, and goes on
+// under the cap. (Its vertex count only grows until run() returns.) Only the calling thread's
+// runs report progress.
+class ConcurrentStrategies {
+ public:
+  ConcurrentStrategies(const RefineState& start, const Jobs& jobs, const SteinerLimit& limit,
+                       size_t count, StrategyChoice& choice)
+      : start_(start), jobs_(jobs), limit_(limit), choice_(choice), slots_(count), end_(count) {
+    slots_[0].cap = choice.cap();
+  }
+
+  // The calling thread takes the first run before any helper starts: it reports progress, and
+  // a cancel on its word ("improve") then finds the first run past its refinement, as one
+  // after another would.
+  void run(size_t threads) {
+    const size_t first = claim(true);
+    std::vector<std::thread> helpers;
+    for (size_t i = 1; i < threads; ++i) helpers.emplace_back([this] { work(false, claim(false)); });
+    work(true, first);
+    for (std::thread& helper : helpers) helper.join();
+  }
+
+ private:
+  // Slots [0, next_) are started, [0, handed_) handed over; slot handed_ knows its cap.
+  struct Slot {
+    StrategyRun run;
+    SteinerGate gate;
+    bool finished = false, stopped = false;
+    uint32_t cap = 0;  // the cap it would have had (from when it is slot handed_)
+  };
+
+  // Sets up the next run for this thread: its slot, or kNoRun if none is left.
+  static constexpr size_t kNoRun = SIZE_MAX;
+  size_t claim(bool caller) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (next_ >= end_) return kNoRun;
+    const size_t i = next_++;
+    Slot& slot = slots_[i];
+    const uint32_t cap = i == handed_ ? slot.cap : choice_.steinerCap;
+    slot.run = StrategyRun(start_, jobs_(i), limit_.with(cap));
+    slot.gate.limit = limit_.with(cap);
+    slot.run.limits().gate = &slot.gate;
+    slot.run.limits().reportProgress = caller;
+    return i;
+  }
+
+  void work(bool caller, size_t i) {
+    for (; i != kNoRun; i = claim(caller)) {
+      slots_[i].run.go();
+      std::lock_guard<std::mutex> lock(mutex_);
+      slots_[i].finished = true;
+      handOver();
+    }
+  }
+
+  // (Under the lock.) Hands the finished runs at the front to the choice, in order, and gives
+  // the next one its cap.
+  void handOver() {
+    while (handed_ < end_ && slots_[handed_].finished) {
+      Slot& slot = slots_[handed_++];
+      if (slot.stopped) slot.run.met = false;
+      slot.run.limits() = {limit_.with(slot.cap), nullptr, true};
+      choice_.consider(std::move(slot.run));
+      slot.run = StrategyRun{};
+      if (choice_.done()) {  // none after it would have run: stop them
+        end_ = handed_;
+        for (size_t k = handed_; k < slots_.size(); ++k) slots_[k].gate.limit = 0;
+        return;
+      }
+      if (handed_ == end_) return;
+      Slot& nextSlot = slots_[handed_];
+      nextSlot.cap = choice_.cap();
+      if (handed_ < next_) {  // started: the limit goes in before `checked` is read (see above)
+        const uint32_t limit = limit_.with(nextSlot.cap);
+        nextSlot.gate.limit = limit;
+        if (nextSlot.gate.checked >= limit) nextSlot.stopped = true, nextSlot.gate.limit = 0;
+      }
+    }
+  }
+
+  const RefineState& start_;
+  const Jobs& jobs_;
+  const SteinerLimit& limit_;
+  StrategyChoice& choice_;
+  std::vector<Slot> slots_;
+  std::mutex mutex_;
+  size_t end_;  // the runs from here on are not started (and stopped if they were)
+  size_t next_ = 0, handed_ = 0;
+};
+#endif
+
+}  // namespace
+
+RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
+                                   const Options& options, const Budget& budget,
+                                   uint32_t steinerCap, RefineState& out,
+                                   std::vector<ExactVertex>& exact) {
+  const std::vector<Strategy> strategies = strategiesFor(options);
+  const Target target(options);
+  const Jobs jobs{input, options, target, budget, strategies, smallestEdge2(input)};
+  const SteinerLimit limit{start.T.vertexCount(),
+                           steinerBudget(input, options, domainArea(start.T, options))};
+  StrategyChoice choice(start, budget, steinerCap);
+  size_t next = 0;
+#ifdef ACUTEMESH_THREADS
+  // The strategies before the fallbacks concurrently, where there are threads to spare.
+  size_t leading = 0;
+  while (leading < strategies.size() && !strategies[leading].fallback) ++leading;
+  const unsigned threads = threadsFor(options);
+  if (threads > 1 && leading > 1) {
+    ConcurrentStrategies(start, jobs, limit, leading, choice).run(std::min<size_t>(threads, leading));
+    next = leading;
+  }
+#endif
+  for (; next < strategies.size() && !choice.done(); ++next) {
+    if (strategies[next].fallback && choice.best.met) continue;
+    StrategyRun run(start, jobs(next), limit.with(choice.cap()));
+    run.go();
+    choice.consider(std::move(run));
+  }
+  StrategyRun& best = choice.best;
+  if (best.met) best.refiner().polish();
+  RefineOutcome outcome;
+  outcome.met = best.met;
+  outcome.result = best.result;
+  // Cancelled while improving: the mesh meets the target, but the caller asked to stop.
+  if (budget.cancelled() && outcome.result.ok())
+    outcome.result = {Status::Cancelled, "cancelled while removing Steiner points; the mesh meets "
+                                         "the target"};
+  outcome.feetHeld = placeExactFeet(best.state(), jobs(0), exact);
+  out = std::move(best.state());
+  return outcome;
+}
+
+}  // namespace acutemesh::detail

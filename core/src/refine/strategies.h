@@ -1,0 +1,37 @@
+// Running strategies: acute and non-obtuse runs try a few boundary strategies, each on its own
+// copy of the start state, and keep the one that meets the target with the fewest Steiner
+// points; that one is polished. The corner fans everywhere are the safe way (they settle every
+// small angle); lazy fans and altitude feet (non-obtuse) often need far fewer points but now
+// and then do not finish. A later strategy stops as soon as it has used as many points as the
+// best so far, so the extra runs cost little where the first is already good.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "../build.h"
+#include "state.h"
+
+namespace acutemesh::detail {
+
+// What refineWithStrategies leaves.
+struct RefineOutcome {
+  bool met = false;       // the best run met the target
+  StepResult result;      // its result
+  bool feetHeld = true;   // exact feet: every triangle around them right or sharper there
+};
+
+// The strategies for options.mode in turn (several at once where there are threads), then
+// polish on the best, into `out` (its state) and `exact` (its exact feet). steinerCap (0: none)
+// bounds each run's Steiner points.
+RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
+                                   const Options& options, const Budget& budget,
+                                   uint32_t steinerCap, RefineState& out,
+                                   std::vector<ExactVertex>& exact);
+
+// The Steiner points a run may make: Options::maxSteiner, or without a budget from the caller
+// kSteinerPerInputVertex per input vertex, at least kSteinerAtLeast, and with an area bound
+// room for about two triangles of that area per unit of domain area (`area`, domainArea's).
+double steinerBudget(const Pslg& input, const Options& options, double area);
+
+}  // namespace acutemesh::detail
