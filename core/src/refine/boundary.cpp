@@ -46,7 +46,8 @@ bool Boundary::splitChord(uint32_t e) {
   const double *pa = s_.P(a), *pb = s_.P(b), *pc = s_.P(c);
   if (dist2(pa, pb) < 4 * job_.minEdge2) return false;
   double ra = std::sqrt(dist2(pa, pc)), rb = std::sqrt(dist2(pb, pc));
-  double ux = (pa[0] - pc[0]) / ra + (pb[0] - pc[0]) / rb, uy = (pa[1] - pc[1]) / ra + (pb[1] - pc[1]) / rb;
+  double ux = (pa[0] - pc[0]) / ra + (pb[0] - pc[0]) / rb,
+         uy = (pa[1] - pc[1]) / ra + (pb[1] - pc[1]) / rb;
   double scale = s_.fanRadius[c] / std::sqrt(ux * ux + uy * uy);
   double m[2] = {pc[0] + ux * scale, pc[1] + uy * scale};
   if (!std::isfinite(m[0]) || !std::isfinite(m[1])) return false;
@@ -59,9 +60,9 @@ bool Boundary::splitChord(uint32_t e) {
   Location loc;
   if (firstFixedCrossed(T, outer, m, reached) == kNone && reached != kNone && T.inDomain(reached))
     loc = T.locate(m, reached);
-  bool placed = (loc.where == Where::InTriangle ||
-                 (loc.where == Where::OnEdge && !T.isFixed(loc.edge))) &&
-                T.insertAt(v, loc) == v;
+  bool placed =
+      (loc.where == Where::InTriangle || (loc.where == Where::OnEdge && !T.isFixed(loc.edge))) &&
+      T.insertAt(v, loc) == v;
   if (!placed) {
     s_.dropLastVertex();
     return false;
@@ -82,7 +83,8 @@ bool Boundary::splitChord(uint32_t e) {
 bool Boundary::splitAtFoot(uint32_t t, int k) {
   const Triangulation& T = s_.T;
   uint32_t opposite = 3 * t + uint32_t((k + 1) % 3);
-  const double *pc = s_.P(T.tri[3 * t + k]), *pa = s_.P(T.tri[opposite]), *pb = s_.P(T.tri[next(opposite)]);
+  const double *pc = s_.P(T.tri[3 * t + k]), *pa = s_.P(T.tri[opposite]),
+               *pb = s_.P(T.tri[next(opposite)]);
   double ux = pb[0] - pa[0], uy = pb[1] - pa[1];
   double s = ((pc[0] - pa[0]) * ux + (pc[1] - pa[1]) * uy) / (ux * ux + uy * uy);
   return splitSubsegment(opposite, s, T.tri[3 * t + k]);

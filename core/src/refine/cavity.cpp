@@ -27,8 +27,7 @@ Cavity::Rim Cavity::grow(const double* x) {
         if (orient2d(a, b, x) < 0 && beyond == kNone) beyond = e;
         continue;
       }
-      if (T.isGhost(n) || std::find(cavity_.begin(), cavity_.end(), n) != cavity_.end())
-        continue;
+      if (T.isGhost(n) || std::find(cavity_.begin(), cavity_.end(), n) != cavity_.end()) continue;
       const uint32_t* w = &T.tri[3 * n];
       if (incircle(s_.P(w[0]), s_.P(w[1]), s_.P(w[2]), x) > 0) cavity_.push_back(n);
     }

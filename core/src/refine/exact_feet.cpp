@@ -10,8 +10,8 @@ namespace {
 // The ends of the input segment through segment vertex f, whose fixed edge `spoke` leaves f;
 // on a point set's hull (no input segment) the input vertices the hull edge runs between,
 // found by following the fixed edges from f both ways.
-void segmentEnds(const RefineState& s, const Job& job, uint32_t f, uint32_t spoke,
-                 const double*& a, const double*& b) {
+void segmentEnds(const RefineState& s, const Job& job, uint32_t f, uint32_t spoke, const double*& a,
+                 const double*& b) {
   const Triangulation& T = s.T;
   const uint32_t seg = T.segment.empty() ? kNone : T.segment[spoke];
   if (seg != kNone) {
@@ -33,7 +33,8 @@ void segmentEnds(const RefineState& s, const Job& job, uint32_t f, uint32_t spok
   uint32_t first = T.tri[next(spoke)];
   for (int side = 0; side < 2; ++side) {
     uint32_t before = f, at = side == 0 ? first : along(f, first);
-    for (uint32_t steps = 0; at != kNone && s.role[at] != kInput && steps < T.vertexCount(); ++steps) {
+    for (uint32_t steps = 0; at != kNone && s.role[at] != kInput && steps < T.vertexCount();
+         ++steps) {
       uint32_t after = along(at, before);
       before = at, at = after;
     }

@@ -20,7 +20,8 @@ namespace acutemesh::detail {
 // point of v's segment line.
 inline void standForFoot(RefineState& s, const Target& target, uint32_t v, uint32_t footOf,
                          const double* along) {
-  if (target.feet && footOf != kNone && dot2d(s.P(v), s.P(footOf), along) != 0) s.footOf[v] = footOf;
+  if (target.feet && footOf != kNone && dot2d(s.P(v), s.P(footOf), along) != 0)
+    s.footOf[v] = footOf;
 }
 
 // Each foot vertex with a corner that counts as right goes to the exact foot of its altitude

@@ -23,14 +23,16 @@ double CornerFans::readStar(uint32_t v) {
     bool inside = T.inDomain(t);
     if (T.isFixed(e)) {
       const double* pu = s_.P(T.tri[next(e)]);
-      spokes_.push_back({T.tri[next(e)], portableAtan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
+      spokes_.push_back(
+          {T.tri[next(e)], portableAtan2(pu[1] - pv[1], pu[0] - pv[0]), inside, false});
     }
     bool bad = inside && job_.target.worstCorner(s_, t).k >= 0;
     (spokes_.empty() ? badBeforeFirst : spokes_.back().sectorBad) |= bad;
     if (!T.isGhost(t)) {
       const double *b = s_.P(T.tri[next(e)]), *c = s_.P(T.tri[prev(e)]);
       double dx = c[0] - b[0], dy = c[1] - b[1];
-      double s = std::clamp(((pv[0] - b[0]) * dx + (pv[1] - b[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      double s =
+          std::clamp(((pv[0] - b[0]) * dx + (pv[1] - b[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
       double q[2] = {b[0] + s * dx, b[1] + s * dy};
       linkDistance = std::min(linkDistance, std::sqrt(dist2(pv, q)));
     }
@@ -86,9 +88,12 @@ void CornerFans::build(uint32_t v, double r) {
     double tv = line.param(pv), tu = line.param(pu);
     double m[2];
     line.at(tv + (tu - tv) * r / std::sqrt(dist2(pv, pu)), m);
-    uint32_t sv = s_.addVertex(m, T.segment.empty() || T.segment[e] == kNone ? kOnHull : kOnSegment, v);
-    if (T.splitFixedEdge(e, sv)) shell[i] = sv;
-    else s_.dropLastVertex();
+    uint32_t sv =
+        s_.addVertex(m, T.segment.empty() || T.segment[e] == kNone ? kOnHull : kOnSegment, v);
+    if (T.splitFixedEdge(e, sv))
+      shell[i] = sv;
+    else
+      s_.dropLastVertex();
   }
   // Points on the arc of each domain sector, then the chords between consecutive points.
   std::vector<uint32_t>& ring = ring_;
@@ -164,7 +169,8 @@ void CornerFans::widen(std::vector<FanCentre>& centres) const {
                                     [&](size_t j, double value) { return x(j) < value; });
       for (auto it = first; it != byX.end() && x(*it) <= x(i) + reach; ++it)
         if (*it != i)
-          visit(centres[*it], settled[*it], std::sqrt(dist2(s_.P(c.vertex), s_.P(centres[*it].vertex))));
+          visit(centres[*it], settled[*it],
+                std::sqrt(dist2(s_.P(c.vertex), s_.P(centres[*it].vertex))));
     };
     double radius = c.widest;
     near([&](const FanCentre& other, bool otherSettled, double d) {

@@ -45,7 +45,8 @@ double domainArea(const Triangulation& T, const Options& options) {
 double smallestEdge2(const Pslg& input) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (size_t i = 0; i < input.points.size(); ++i)
-    lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
+    lo[i % 2] = std::min(lo[i % 2], input.points[i]),
+           hi[i % 2] = std::max(hi[i % 2], input.points[i]);
   double dx = hi[0] - lo[0], dy = hi[1] - lo[1];
   double diagonal = std::sqrt(dx * dx + dy * dy);
   double largest = std::max({-lo[0], -lo[1], hi[0], hi[1], 0.0});

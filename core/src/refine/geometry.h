@@ -48,7 +48,8 @@ using Candidates = std::vector<std::array<double, 3>>;
 // order in every standard library).
 inline void sortFarthestFirst(Candidates& points) {
   for (size_t i = 1; i < points.size(); ++i)
-    for (size_t j = i; j > 0 && points[j - 1][2] < points[j][2]; --j) std::swap(points[j - 1], points[j]);
+    for (size_t j = i; j > 0 && points[j - 1][2] < points[j][2]; --j)
+      std::swap(points[j - 1], points[j]);
 }
 
 // The line of an input segment (or of p-q for a hull edge). Points on a segment are made from

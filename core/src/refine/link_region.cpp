@@ -24,7 +24,8 @@ bool LinkRegion::leavesRoom() const {
 void LinkRegion::clip(bool wedges) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (const auto& edge : edges)
-    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], s_.P(edge[0])[k]), hi[k] = std::max(hi[k], s_.P(edge[0])[k]);
+    for (int k = 0; k < 2; ++k)
+      lo[k] = std::min(lo[k], s_.P(edge[0])[k]), hi[k] = std::max(hi[k], s_.P(edge[0])[k]);
   const bool largest = target_.boundsLargest(), smallest = target_.minAngle > 0;
   // Every clip adds at most one corner: the buffers are sized before the loops, which run on
   // raw pointers (the hottest loop of the improvement rounds).
@@ -36,7 +37,8 @@ void LinkRegion::clip(bool wedges) {
   std::array<double, 2>* next = poly + room;
   double* f = side_.data();
   size_t n = 4;
-  poly[0] = {lo[0], lo[1]}, poly[1] = {hi[0], lo[1]}, poly[2] = {hi[0], hi[1]}, poly[3] = {lo[0], hi[1]};
+  poly[0] = {lo[0], lo[1]}, poly[1] = {hi[0], lo[1]}, poly[2] = {hi[0], hi[1]},
+  poly[3] = {lo[0], hi[1]};
   auto clipTo = [&](double nx, double ny, double c) {  // keep n.p > c
     size_t kept = 0;
     for (size_t i = 0; i < n; ++i) {

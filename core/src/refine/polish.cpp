@@ -28,7 +28,7 @@ void Polish::run() {
     idleRounds = after == before ? idleRounds + 1 : 0;
     const bool small = after < kSmallPolish;
     if (small && target.nonObtuse) continue;  // all the rounds: they are cheap there
-    const double gain = before >= kLargeRoundFrom  ? kLargeGain
+    const double gain = before >= kLargeRoundFrom   ? kLargeGain
                         : before >= kHalvesGainFrom ? kHalvesGain
                                                     : kPolishGain;
     if (small ? idleRounds == 2 : double(before - after) < gain * double(before)) return;

@@ -243,7 +243,8 @@ bool Reduce::shouldStop() {
   if ((++attempts_ & 63) != 0) return false;
   if (job_.reportsProgress() && (attempts_ & 4095) == 0)
     job_.options.progress(
-        {"improve", -1, uint32_t(job_.input.vertexCount() + s_.liveSteiner(job_.input.vertexCount()))});
+        {"improve", -1,
+         uint32_t(job_.input.vertexCount() + s_.liveSteiner(job_.input.vertexCount()))});
   return job_.budget.stop();
 }
 

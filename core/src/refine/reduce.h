@@ -87,8 +87,8 @@ class Reduce {
   Insertion& insertion_;
   LinkRegion region_;  // mergePoint's
   std::vector<uint32_t> touched_, hole_, partners_;
-  std::vector<Moved> moved_;     // by holeMeetsTarget, for undoMoves
-  std::vector<uint8_t> dirty_;   // per vertex: worth another removal / merge try
+  std::vector<Moved> moved_;    // by holeMeetsTarget, for undoMoves
+  std::vector<uint8_t> dirty_;  // per vertex: worth another removal / merge try
   Candidates candidates_;
   uint32_t attempts_ = 0;  // removal and merge attempts so far (shouldStop)
 };

@@ -32,9 +32,8 @@ RefineOutcome refineOnce(const RefineState& start, const Pslg& input, const Opti
 
 }  // namespace
 
-StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
-                  const Budget& budget, std::vector<uint8_t>& freeVertex,
-                  std::vector<ExactVertex>& exact) {
+StepResult refine(Triangulation& T, const Pslg& input, const Options& options, const Budget& budget,
+                  std::vector<uint8_t>& freeVertex, std::vector<ExactVertex>& exact) {
   exact.clear();
   const RefineState start = RefineState::start(std::move(T), input.vertexCount());
   if (options.exactFeet && options.mode == Mode::NonObtuse) {
@@ -58,8 +57,8 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
     sure.maxAngle = 90;
     o = refineOnce(start, input, sure, budget, 0, T, freeVertex, exact);
     if (!o.met) return o.result;
-    return {Status::TargetNotMet,
-            "the bound of " + degreesText(options.maxAngle) + " was not reached; the mesh is acute"};
+    return {Status::TargetNotMet, "the bound of " + degreesText(options.maxAngle) +
+                                      " was not reached; the mesh is acute"};
   }
   // Quality: a run that ended short of the target for lack of points (not for input angles
   // below it, which no point mends) has been wandering.
@@ -69,7 +68,8 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
   if (o.result.status == Status::Cancelled) return o.result;
   return {Status::TargetNotMet, "a minimum angle of " + degreesText(options.minAngle) +
                                     " was not reached with half the Steiner budget; the mesh is "
-                                    "refined to " + degreesText(kSureMinAngle) +
+                                    "refined to " +
+                                    degreesText(kSureMinAngle) +
                                     (o.result.ok() ? "" : " (" + o.result.message + ")")};
 }
 

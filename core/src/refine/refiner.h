@@ -19,10 +19,16 @@ namespace acutemesh::detail {
 class Refiner {
  public:
   Refiner(RefineState& s, const Job& job)
-      : s_(s), job_(job), cavity_(s, job_), boundary_(s, job_, cavity_),
-        insertion_(s, job_, cavity_, boundary_), fans_(s, job_), relocation_(s, job_),
+      : s_(s),
+        job_(job),
+        cavity_(s, job_),
+        boundary_(s, job_, cavity_),
+        insertion_(s, job_, cavity_, boundary_),
+        fans_(s, job_),
+        relocation_(s, job_),
         repair_(s, job_, fans_, relocation_, boundary_, insertion_),
-        reduce_(s, job_, relocation_, insertion_), polish_(s, job_, relocation_, reduce_, repair_) {}
+        reduce_(s, job_, relocation_, insertion_),
+        polish_(s, job_, relocation_, reduce_, repair_) {}
   Refiner(const Refiner&) = delete;
   Refiner& operator=(const Refiner&) = delete;
 

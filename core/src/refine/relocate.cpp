@@ -75,7 +75,8 @@ bool Relocation::relocate(uint32_t a) {
   if (!freeStar(a)) return false;
   const Target& target = job_.target;
   region_.edges.clear();
-  for (size_t i = 0; i < ring_.size(); ++i) region_.edges.push_back({ring_[i], ring_[(i + 1) % ring_.size()]});
+  for (size_t i = 0; i < ring_.size(); ++i)
+    region_.edges.push_back({ring_[i], ring_[(i + 1) % ring_.size()]});
   if (!region_.leavesRoom()) return false;
   double old[2] = {s_.P(a)[0], s_.P(a)[1]};
   // Below 90 degrees the bound's wedges first, then the plain slabs: the angle at a is no
@@ -88,7 +89,8 @@ bool Relocation::relocate(uint32_t a) {
       if (place(a, centroid[0], centroid[1])) return true;
       for (double w : {0.5, 0.25})
         for (const auto& p : poly)
-          if (place(a, centroid[0] + w * (p[0] - centroid[0]), centroid[1] + w * (p[1] - centroid[1])))
+          if (place(a, centroid[0] + w * (p[0] - centroid[0]),
+                    centroid[1] + w * (p[1] - centroid[1])))
             return true;
     }
     if (!wedges) break;
@@ -126,7 +128,8 @@ bool Relocation::insideOneDiametralDisk(const std::vector<std::array<double, 2>>
 bool Relocation::ontoPerpendicular(uint32_t a, const double* old) {
   const size_t n = ring_.size();
   for (size_t i = 0; i < n; ++i) {
-    const double *m = s_.P(ring_[i]), *before = s_.P(ring_[(i + n - 1) % n]), *after = s_.P(ring_[(i + 1) % n]);
+    const double *m = s_.P(ring_[i]), *before = s_.P(ring_[(i + n - 1) % n]),
+                 *after = s_.P(ring_[(i + 1) % n]);
     if (orient2d(before, m, after) != 0) continue;
     double nx = -(after[1] - m[1]), ny = after[0] - m[0];  // to the left of m->after: a's side
     double s = ((old[0] - m[0]) * nx + (old[1] - m[1]) * ny) / (nx * nx + ny * ny);
@@ -180,8 +183,8 @@ bool Relocation::slide(uint32_t a) {
   // Only samples within the stretches (widened by a margin for rounding, also the rounding of
   // the point itself) can pass place()'s exact test; the others are not tried (with exact
   // segments each costs exact predicates to put it on the line).
-  const double reach = std::fabs(line.start[0]) + std::fabs(line.start[1]) +
-                       std::fabs(line.ux) + std::fabs(line.uy);
+  const double reach =
+      std::fabs(line.start[0]) + std::fabs(line.start[1]) + std::fabs(line.ux) + std::fabs(line.uy);
   const double margin = 1e-9 * std::fabs(tq - tp) +
                         8 * std::numeric_limits<double>::epsilon() * reach / std::sqrt(line.u2);
   if (!slideStretches(tp, tq, line, margin)) return false;
@@ -213,9 +216,12 @@ bool Relocation::slideStretches(double tp, double tq, const SegmentLine& line, d
   auto keep = [&](double f0, double f1, double m0, double m1) {  // f0 + t f1 > 0
     const double e0 = err(m0), e1 = err(m1);
     if (std::fabs(f1) > e1) {
-      const double bound = -f0 / f1, slack = margin + (e0 + std::fabs(bound) * e1) / (std::fabs(f1) - e1);
-      if (f1 > 0) lo = std::max(lo, bound - slack);
-      else hi = std::min(hi, bound + slack);
+      const double bound = -f0 / f1,
+                   slack = margin + (e0 + std::fabs(bound) * e1) / (std::fabs(f1) - e1);
+      if (f1 > 0)
+        lo = std::max(lo, bound - slack);
+      else
+        hi = std::min(hi, bound + slack);
     } else if (margin > 0 ? f0 < -e0 : !(f0 > 0)) {  // (margin: 0 may be a right angle all along)
       hi = -INFINITY;
     }
@@ -231,7 +237,8 @@ bool Relocation::slideStretches(double tp, double tq, const SegmentLine& line, d
     double yx[2] = {y[0] - x[0], y[1] - x[1]}, sx[2] = {s[0] - x[0], s[1] - x[1]};
     double sy[2] = {s[0] - y[0], s[1] - y[1]}, xy[2] = {-yx[0], -yx[1]};
     const double yxPerp[2] = {yx[1], -yx[0]};  // X left of x->y: (X - x) . yxPerp < 0
-    keep(yx[0] * sx[1] - yx[1] * sx[0], yx[0] * d[1] - yx[1] * d[0], mag(sx, yxPerp), mag(d, yxPerp));
+    keep(yx[0] * sx[1] - yx[1] * sx[0], yx[0] * d[1] - yx[1] * d[0], mag(sx, yxPerp),
+         mag(d, yxPerp));
     // Outside the domain only the orientation counts; so it does for a minimum angle alone
     // (quality), whose bounds are not taken here.
     if (!ringInside_[i] || !job_.target.boundsLargest()) continue;

@@ -94,8 +94,11 @@ StepResult Repair::repairAll() {
   const Options& options = job_.options;
   RepairQueue& queue = queue_;
   using Order = RepairQueue::Order;
-  const bool byGain = job_.strategy.fewestBadFirst && target.boundsLargest() && options.maxArea <= 0;
-  queue.reset(options.maxArea > 0 ? Order::FactorsOfTwo : byGain ? Order::FewestBadFirst : Order::Largest);
+  const bool byGain =
+      job_.strategy.fewestBadFirst && target.boundsLargest() && options.maxArea <= 0;
+  queue.reset(options.maxArea > 0 ? Order::FactorsOfTwo
+              : byGain            ? Order::FewestBadFirst
+                                  : Order::Largest);
   auto push = [&](uint32_t t) {
     if (!T.inDomain(t)) return;
     Corner c = target.worstCorner(s_, t);
@@ -113,8 +116,9 @@ StepResult Repair::repairAll() {
         options.progress({"refine", -1, T.vertexCount()});
     }
     if (job_.limits->reached(T.vertexCount()))
-      return {Status::TargetNotMet, "Steiner point budget used up before every triangle met "
-                                    "the target"};
+      return {Status::TargetNotMet,
+              "Steiner point budget used up before every triangle met "
+              "the target"};
     const uint32_t t = entry.t;
     if (!T.inDomain(t) || shortestEdge2(T, t) != entry.size) continue;
     Corner c = target.worstCorner(s_, t);

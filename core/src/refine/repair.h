@@ -26,7 +26,11 @@ class Repair {
  public:
   Repair(RefineState& s, const Job& job, CornerFans& fans, Relocation& relocation,
          Boundary& boundary, Insertion& insertion)
-      : s_(s), job_(job), fans_(fans), relocation_(relocation), boundary_(boundary),
+      : s_(s),
+        job_(job),
+        fans_(fans),
+        relocation_(relocation),
+        boundary_(boundary),
         insertion_(insertion) {}
 
   // Repairs until no triangle misses the target, or a budget ends first (TargetNotMet or

@@ -17,7 +17,8 @@ ShortestEdge shortestEdge(const RefineState& s, uint32_t t) {
   const uint32_t* v = &s.T.tri[3 * t];
   int k0 = 0;
   for (int k = 1; k < 3; ++k)
-    if (dist2(s.P(v[(k + 1) % 3]), s.P(v[(k + 2) % 3])) < dist2(s.P(v[(k0 + 1) % 3]), s.P(v[(k0 + 2) % 3])))
+    if (dist2(s.P(v[(k + 1) % 3]), s.P(v[(k + 2) % 3])) <
+        dist2(s.P(v[(k0 + 1) % 3]), s.P(v[(k0 + 2) % 3])))
       k0 = k;
   ShortestEdge e{s.P(v[(k0 + 1) % 3]), s.P(v[(k0 + 2) % 3]), {0, 0}, 0};
   circumcenter(s.P(v[0]), s.P(v[1]), s.P(v[2]), e.center);

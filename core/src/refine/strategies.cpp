@@ -4,8 +4,8 @@
 #include <memory>
 #include <mutex>
 
-#include "geometry.h"
 #include "exact_feet.h"
+#include "geometry.h"
 #include "refiner.h"
 #include "threads.h"
 
@@ -93,8 +93,8 @@ class StrategyRun {
       // and no more than kReservedVerticesAtMost more: a bound far too small for the time
       // limit must not reserve gigabytes up front.
       const double area = domainArea(start.T, options), n = start.T.vertexCount();
-      box_->state.reserve(size_t(std::min(
-          {double(steinerLimit), n + 1.6 * area / options.maxArea, n + double(kReservedVerticesAtMost)})));
+      box_->state.reserve(size_t(std::min({double(steinerLimit), n + 1.6 * area / options.maxArea,
+                                           n + double(kReservedVerticesAtMost)})));
     }
   }
   void go() {
@@ -114,7 +114,8 @@ class StrategyRun {
  private:
   // The state, the run's limits and its job, where the refiner can keep referring to them.
   struct Box {
-    Box(const RefineState& start, const Job& j) : state(start), job(j), refiner(state, withLimits()) {}
+    Box(const RefineState& start, const Job& j)
+        : state(start), job(j), refiner(state, withLimits()) {}
     const Job& withLimits() {
       job.limits = &limits;
       return job;
@@ -190,7 +191,8 @@ class ConcurrentStrategies {
   void run(size_t threads) {
     const size_t first = claim(true);
     std::vector<std::thread> helpers;
-    for (size_t i = 1; i < threads; ++i) helpers.emplace_back([this] { work(false, claim(false)); });
+    for (size_t i = 1; i < threads; ++i)
+      helpers.emplace_back([this] { work(false, claim(false)); });
     work(true, first);
     for (std::thread& helper : helpers) helper.join();
   }
@@ -283,7 +285,8 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   while (leading < strategies.size() && !strategies[leading].fallback) ++leading;
   const unsigned threads = threadsFor(options);
   if (threads > 1 && leading > 1) {
-    ConcurrentStrategies(start, jobs, limit, leading, choice).run(std::min<size_t>(threads, leading));
+    ConcurrentStrategies(start, jobs, limit, leading, choice)
+        .run(std::min<size_t>(threads, leading));
     next = leading;
   }
 #endif
@@ -300,8 +303,9 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   outcome.result = best.result;
   // Cancelled while improving: the mesh meets the target, but the caller asked to stop.
   if (budget.cancelled() && outcome.result.ok())
-    outcome.result = {Status::Cancelled, "cancelled while removing Steiner points; the mesh meets "
-                                         "the target"};
+    outcome.result = {Status::Cancelled,
+                      "cancelled while removing Steiner points; the mesh meets "
+                      "the target"};
   outcome.feetHeld = placeExactFeet(best.state(), jobs(0), exact);
   out = std::move(best.state());
   return outcome;

@@ -16,9 +16,9 @@ namespace acutemesh::detail {
 
 // What refineWithStrategies leaves.
 struct RefineOutcome {
-  bool met = false;       // the best run met the target
-  StepResult result;      // its result
-  bool feetHeld = true;   // exact feet: every triangle around them right or sharper there
+  bool met = false;      // the best run met the target
+  StepResult result;     // its result
+  bool feetHeld = true;  // exact feet: every triangle around them right or sharper there
 };
 
 // The strategies for options.mode in turn (several at once where there are threads), then

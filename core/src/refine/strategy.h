@@ -7,8 +7,8 @@ namespace acutemesh::detail {
 struct Strategy {
   bool cutAtFeetFirst = false;  // non-obtuse: cut slivers at altitude feet before the fans
   bool footOnSegments = false;  // non-obtuse: split an encroached subsegment at the altitude foot
-  bool lazyFans = false;  // fans only at small sectors where a bad triangle turns up
-  bool wideFans = false;  // fans at the smallest corners as wide as their neighbours allow
+  bool lazyFans = false;        // fans only at small sectors where a bad triangle turns up
+  bool wideFans = false;        // fans at the smallest corners as wide as their neighbours allow
   // Non-obtuse: slide a segment vertex to the middle of the longest stretch where its star
   // meets the target before trying a few sampled places.
   bool exactSlide = false;
