@@ -85,6 +85,8 @@ TEST(Vocabulary, UnknownNamesListTheChoicesAndSuggestTheNearest) {
   EXPECT_EQ(message.find("did you mean"), std::string::npos);
   EXPECT_FALSE(parseName("jsn", format, &message));
   EXPECT_NE(message.find("did you mean 'json'?"), std::string::npos);
+  EXPECT_FALSE(parseName("jsno", format, &message));  // two letters swapped: one slip
+  EXPECT_NE(message.find("did you mean 'json'?"), std::string::npos);
   FillRule fill;
   EXPECT_FALSE(parseName("holes", fill, &message));
   EXPECT_EQ(message, "unknown fill rule 'holes' (triangle, evenodd, nonzero)");
