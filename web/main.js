@@ -170,8 +170,8 @@ async function takeSample(name) {
 
 // ---- options ------------------------------------------------------------------------------
 // Only what the user set (a positive number) goes to the mesher; the rest is its own default,
-// as for the CLI and the package: quality mode aims at 20 degrees when neither a minimum angle
-// nor a maximum area is given.
+// as for the CLI and the package: quality mode aims at vocabulary.defaults.qualityMinAngle
+// only when neither a minimum angle nor a maximum area is given.
 function meshOptions() {
   const num = (el) => Number(el.value) || 0;
   const o = { mode: ui.mode.value };

@@ -106,8 +106,8 @@ bool parseName(std::string_view name, OutputFormat& out, std::string* message) {
   return lookUp(kOutputFormats, "format", name, out, message);
 }
 
-// The tables list their enums in order, so a value's entry is table[value] (the JavaScript
-// package relies on it to turn numbers into names).
+// The tables list their enums in order, so a value's entry is table[value] (in JavaScript,
+// vocabulary.vertexKinds[k] names the k of MeshResult.vertexKind).
 namespace {
 template <class Entry, size_t N>
 constexpr bool inEnumOrder(const Entry (&table)[N]) {

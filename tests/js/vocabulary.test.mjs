@@ -124,4 +124,6 @@ test('a CG:SHOP instance meshes the same from the CLI, mesh() and the worker', a
   const plain = am.mesh({ points: instance.points, segments: instance.segments }, { mode: 'nonobtuse' });
   assert.equal(plain.options.exactFeet, false);
   assert.deepEqual(plain.exactPoints, []);
+  // validate() checks a mesh with the options it was made with, whatever its input's format.
+  assert.ok(am.validate(instance, plain).ok);
 });

@@ -186,7 +186,7 @@ function numberOption(options, key, fallback) {
 
 // The options that describe the job, as names (what a mesh result carries, and what
 // validate() reads back); functions and signals are handled by mesh() itself. `core` holds the
-// names' checks, the defaults and the input policy (makeApi); `input` is toPslg's result.
+// names' checks and the defaults (makeApi); `input` is toPslg's result.
 function toOptions(options, input, core) {
   if (options === undefined) options = {};
   checkObject(options, 'options');
@@ -203,7 +203,7 @@ function toOptions(options, input, core) {
   if (!(timeLimit >= 0) || timeLimit === Infinity)
     throw badInput(`timeLimit must be a number of seconds >= 0 (0: none), not ${timeLimit}`);
   const flag = (key) => (options[key] === undefined ? defaults[key] : options[key]);
-  const resolved = {
+  return {
     mode,
     fill,
     convexHull: flag('convexHull'),
@@ -216,10 +216,15 @@ function toOptions(options, input, core) {
     maxSteiner,
     timeLimit,
   };
-  // A parsed input: the same policy as the CLI's (CG:SHOP instances exact).
-  if (input.format !== undefined)
-    Object.assign(resolved, core.inputPolicy(input.format, options.exactFeet !== undefined, resolved));
-  return resolved;
+}
+
+// mesh()'s options for a parsed input: the core's input policy, as the CLI applies it (a
+// CG:SHOP instance meshed with exact segments, and exact feet unless options.exactFeet is
+// given). validate() takes the options a mesh was made with as they are.
+function withInputPolicy(resolved, input, options, core) {
+  if (input.format === undefined) return resolved;
+  const exactFeetChosen = options !== undefined && options.exactFeet !== undefined;
+  return { ...resolved, ...core.inputPolicy(input.format, exactFeetChosen, resolved) };
 }
 
 function checkSignal(signal) {
@@ -433,7 +438,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
 
     mesh(pslg, options = {}) {
       const input = toPslg(pslg, core.names);
-      const opts = toOptions(options, input, core);
+      const opts = withInputPolicy(toOptions(options, input, core), input, options, core);
       const { onProgress, signal } = options;
       if (onProgress !== undefined && typeof onProgress !== 'function')
         throw new TypeError(`options.onProgress must be a function, not ${describe(onProgress)}`);

@@ -64,9 +64,9 @@ export interface PslgInput {
 /** A parser's result: the PSLG and what the parser tolerated ("NAME:LINE: ..."). */
 export interface ParsedPslg extends Pslg {
   /**
-   * What the text was. mesh() and validate() apply the core's input policy to it, as the CLI
-   * does: a 'cgshop' instance is meshed with exactSegments, and with exactFeet unless
-   * options.exactFeet is given.
+   * What the text was. mesh() applies the core's input policy to it, as the CLI does: a
+   * 'cgshop' instance is meshed with exactSegments, and with exactFeet unless options.exactFeet
+   * is given (MeshResult.options says so, and validate() checks with them).
    */
   format: InputFormat;
   warnings: string[];
