@@ -1,8 +1,9 @@
-// Embind bindings: the core's C++ API (mesh, validate, the io readers and writers) as plain
-// functions over typed arrays. Bindings only: every check of argument types, every default and
-// every string <-> enum mapping lives in the JS facade (wasm/js/api.js), so the functions here
-// take already-checked numbers and arrays and return plain JS objects that own copies of the
-// data (nothing for JS to delete()).
+// Embind bindings: the core's C++ API (mesh, validate, the io readers and writers, the
+// vocabulary and the input policy) as plain functions over typed arrays. Bindings only: the
+// checks of argument types and the defaults live in the JS facade (wasm/js/api.js), which takes
+// the names and defaults it checks against from core_vocabulary(). Enums cross as their names
+// (vocabulary.h), already checked by the facade; results are plain JS objects that own copies
+// of the data (nothing for JS to delete()).
 #include <emscripten/bind.h>
 #include <emscripten/emscripten.h>
 #include <emscripten/val.h>
@@ -16,6 +17,7 @@
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
+#include "acutemesh/vocabulary.h"
 
 using emscripten::val;
 
@@ -94,11 +96,11 @@ Mesh meshFromJs(const val& m) {
   return mesh;
 }
 
-// Options from the facade's checked object: mode and fill arrive as the enums' numbers.
+// Options from the facade's checked object: mode and fill arrive as names it has checked.
 Options optionsFromJs(const val& o) {
   Options opt;
-  opt.mode = Mode(o["mode"].as<int>());
-  opt.fill = FillRule(o["fill"].as<int>());
+  parseName(o["mode"].as<std::string>(), opt.mode);
+  parseName(o["fill"].as<std::string>(), opt.fill);
   opt.convexHull = o["convexHull"].as<bool>();
   opt.exactSegments = o["exactSegments"].as<bool>();
   opt.exactFeet = o["exactFeet"].as<bool>();
@@ -152,7 +154,7 @@ val meshJs(const val& points, const val& segments, const val& holes, const val& 
   }
   Result r = mesh(input, opt);
   val out = val::object();
-  out.set("status", int(r.status));
+  out.set("status", std::string(nameOf(r.status)));
   out.set("message", r.message);
   out.set("points", toJs(r.mesh.points));
   out.set("triangles", toJs(r.mesh.triangles));
@@ -181,7 +183,8 @@ val validateJs(const val& points, const val& segments, const val& holes, const v
   return out;
 }
 
-// Parsers: {ok, message} on failure, else the PSLG and what the text said about it.
+// Parsers: {ok, message} on failure, else the PSLG and what the text said about it: its
+// format, and the fill rule the input policy gives it when that is not the default (rings).
 val inputToJs(const ParseResult& r, const Input& in) {
   val out = val::object();
   out.set("ok", r.ok);
@@ -190,8 +193,10 @@ val inputToJs(const ParseResult& r, const Input& in) {
   out.set("points", toJs(in.pslg.points));
   out.set("segments", toJs(in.pslg.segments));
   out.set("holes", toJs(in.pslg.holes));
-  out.set("format", int(in.format));
-  out.set("hasRings", in.hasRings);
+  out.set("format", std::string(nameOf(in.format)));
+  Options implied;
+  applyInputPolicy(in, {}, implied);
+  if (implied.fill != Options{}.fill) out.set("fill", std::string(nameOf(implied.fill)));
   out.set("instanceUid", in.instanceUid);
   out.set("warnings", stringsToJs(in.warnings));
   return out;
@@ -216,20 +221,11 @@ val parseJsonJs(const val& text, const std::string& name) {
   return inputToJs(r, in);
 }
 
-// Writers, by format name (the facade only passes the names below).
-std::string formatText(const std::string& format, const Mesh& mesh) {
-  if (format == "node") return formatNode(mesh);
-  if (format == "ele") return formatEle(mesh);
-  if (format == "poly") return formatPoly(mesh);
-  if (format == "json") return formatJson(mesh);
-  if (format == "off") return formatOff(mesh);
-  if (format == "obj") return formatObj(mesh);
-  if (format == "svg") return formatSvg(mesh);
-  return {};
-}
-
-val formatJs(const std::string& format, const val& m) {
-  return textToJs(formatText(format, meshFromJs(m)));
+// Writers, by the format's name (one the facade checked, not needing an instance).
+val formatJs(const std::string& name, const val& m) {
+  OutputFormat format = OutputFormat::Node;
+  parseName(name, format);
+  return textToJs(formatMesh(format, meshFromJs(m)));
 }
 
 val formatCgshopJs(const val& m, const std::string& uid, uint32_t instanceVertices) {
@@ -248,6 +244,101 @@ val memoryJs() {
 
 std::string versionJs() { return version(); }
 
+// --- the vocabulary and the input policy ---------------------------------------------------
+
+template <class Entry, size_t N>
+val namedToJs(const Entry (&table)[N]) {
+  val out = val::array();
+  for (const Entry& e : table) {
+    val o = val::object();
+    o.set("name", std::string(e.name));
+    o.set("value", int(e.value));
+    o.set("description", std::string(e.description));
+    out.call<void>("push", o);
+  }
+  return out;
+}
+
+// Options' defaults, by the names the facade's options have.
+val defaultsToJs() {
+  const Options d;
+  val o = val::object();
+  o.set("mode", std::string(nameOf(d.mode)));
+  o.set("fill", std::string(nameOf(d.fill)));
+  o.set("convexHull", d.convexHull);
+  o.set("exactSegments", d.exactSegments);
+  o.set("exactFeet", d.exactFeet);
+  o.set("maxAngle", d.maxAngle);
+  o.set("minAngle", d.minAngle);
+  o.set("maxArea", d.maxArea);
+  o.set("maxSteiner", d.maxSteiner);
+  o.set("timeLimit", d.timeLimit);
+  o.set("qualityMinAngle", kQualityDefaultMinAngle);
+  // The fill rule the input policy gives rings (fromRings' default, as for JSON rings).
+  Options rings;
+  applyInputPolicy(InputFormat::JsonPslg, true, {}, rings);
+  o.set("ringsFill", std::string(nameOf(rings.fill)));
+  return o;
+}
+
+// The tables of vocabulary.h and the defaults: what the facade checks names against, and what
+// it exports as `vocabulary`.
+val vocabularyJs() {
+  val out = val::object();
+  out.set("modes", namedToJs(kModes));
+  out.set("fillRules", namedToJs(kFillRules));
+  out.set("statuses", namedToJs(kStatuses));
+  out.set("vertexKinds", namedToJs(kVertexKinds));
+  out.set("inputFormats", namedToJs(kInputFormats));
+  val formats = val::array();
+  for (const OutputFormatInfo& f : kOutputFormats) {
+    val o = val::object();
+    o.set("name", std::string(f.name));
+    o.set("value", int(f.value));
+    o.set("extension", std::string(f.extension));
+    o.set("mediaType", std::string(f.mediaType));
+    o.set("roundsExactPoints", f.roundsExactPoints);
+    o.set("needsInstance", f.needsInstance);
+    o.set("description", std::string(f.description));
+    formats.call<void>("push", o);
+  }
+  out.set("outputFormats", formats);
+  out.set("defaults", defaultsToJs());
+  return out;
+}
+
+// The core's message for a name that is not one of `kind`'s ("mode", "fill", "inputFormat",
+// "outputFormat"): the choices, and the nearest name when one is close.
+std::string unknownNameJs(const std::string& kind, const std::string& name) {
+  std::string message;
+  Mode mode;
+  FillRule fill;
+  InputFormat input;
+  OutputFormat output;
+  if (kind == "mode") parseName(name, mode, &message);
+  else if (kind == "fill") parseName(name, fill, &message);
+  else if (kind == "inputFormat") parseName(name, input, &message);
+  else parseName(name, output, &message);
+  return message;
+}
+
+// The input policy for an input of `format` (a checked name) meshed with the facade's
+// options: the exact flags it sets. The fill rule is the caller's here (a parsed input's
+// implied fill came with the parse, see inputToJs).
+val inputPolicyJs(const std::string& format, bool exactFeetChosen, const val& options) {
+  InputFormat f = InputFormat::Unknown;
+  parseName(format, f);
+  Options opt = optionsFromJs(options);
+  ChosenOptions chosen;
+  chosen.fill = true;
+  chosen.exactFeet = exactFeetChosen;
+  applyInputPolicy(f, false, chosen, opt);
+  val out = val::object();
+  out.set("exactSegments", opt.exactSegments);
+  out.set("exactFeet", opt.exactFeet);
+  return out;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(acutemesh) {
@@ -260,4 +351,7 @@ EMSCRIPTEN_BINDINGS(acutemesh) {
   emscripten::function("core_formatCgshop", &formatCgshopJs);
   emscripten::function("core_memory", &memoryJs);
   emscripten::function("core_version", &versionJs);
+  emscripten::function("core_vocabulary", &vocabularyJs);
+  emscripten::function("core_unknownName", &unknownNameJs);
+  emscripten::function("core_inputPolicy", &inputPolicyJs);
 }

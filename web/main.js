@@ -20,13 +20,15 @@ const ui = {
   maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
   status: $('status'), stats: $('stats'), histogram: $('histogram'), legend: $('legend'),
   view: $('view'), fit: $('fit'), showEdges: $('show-edges'), showSteiner: $('show-steiner'),
-  dropHint: $('drop-hint'),
+  dropHint: $('drop-hint'), downloads: $('downloads'),
 };
 
 const BUNDLED_FONTS = {
   'pagella-regular': 'fonts/texgyrepagella-regular.otf',
   'pagella-bold': 'fonts/texgyrepagella-bold.otf',
 };
+// What the option inputs hold when the URL says nothing: the page's mode, and otherwise the
+// mesher's defaults (vocabulary.defaults; tests/web checks that they agree).
 const OPTION_DEFAULTS = { mode: 'acute', maxAngle: '90', minAngle: '0', maxArea: '0', maxSteiner: '0' };
 const TEXT_DEFAULTS = { text: 'Acute', font: 'pagella-regular', tol: '5' };
 
@@ -43,9 +45,10 @@ let lastResult = null;        // { mesh, label, key }
 let lastMeshedKey = null;     // to fit the view only when the input itself changed
 let running = null;           // AbortController of the run in progress
 let runs = 0;
+let vocabulary = null;        // the mesher's names and defaults, once it has loaded
 warmUp();
 const enginePromise = loadEngine();
-enginePromise.catch((e) => setStatus(`Could not load the mesher: ${e.message}`, 'error'));
+enginePromise.then(takeVocabulary, (e) => setStatus(`Could not load the mesher: ${e.message}`, 'error'));
 
 // ---- status and source line ---------------------------------------------------------------
 function setStatus(text, kind = '') {
@@ -166,13 +169,15 @@ async function takeSample(name) {
 }
 
 // ---- options ------------------------------------------------------------------------------
+// Only what the user set (a positive number) goes to the mesher; the rest is its own default,
+// as for the CLI and the package: quality mode aims at vocabulary.defaults.qualityMinAngle
+// only when neither a minimum angle nor a maximum area is given.
 function meshOptions() {
   const num = (el) => Number(el.value) || 0;
   const o = { mode: ui.mode.value };
-  if (o.mode === 'acute') o.maxAngle = num(ui.maxAngle) || 90;
+  if (o.mode === 'acute' && num(ui.maxAngle) > 0) o.maxAngle = num(ui.maxAngle);
   if (o.mode !== 'cdt') {
     if (num(ui.minAngle) > 0) o.minAngle = num(ui.minAngle);
-    else if (o.mode === 'quality') o.minAngle = 20;  // the CLI's default: quality needs a bound
     if (num(ui.maxArea) > 0) o.maxArea = num(ui.maxArea);
     if (num(ui.maxSteiner) > 0) o.maxSteiner = Math.round(num(ui.maxSteiner));
   }
@@ -183,8 +188,39 @@ function syncOptionInputs() {
   const m = ui.mode.value;
   ui.maxAngle.disabled = m !== 'acute';
   for (const el of [ui.minAngle, ui.maxArea, ui.maxSteiner]) el.disabled = m === 'cdt';
-  // Quality with no minimum asked would do nothing worth seeing; 20 is the mesher's default.
-  ui.minAngle.placeholder = m === 'quality' ? '20' : '0';
+  // An empty input means the mesher's default, which the placeholder shows.
+  if (!vocabulary) return;
+  const d = vocabulary.defaults;
+  const bothUnset = !(Number(ui.minAngle.value) > 0) && !(Number(ui.maxArea.value) > 0);
+  ui.maxAngle.placeholder = String(d.maxAngle);
+  ui.minAngle.placeholder = String(m === 'quality' && bothUnset ? d.qualityMinAngle : d.minAngle);
+  ui.maxArea.placeholder = String(d.maxArea);
+  ui.maxSteiner.placeholder = String(d.maxSteiner);
+}
+
+// The mesher's vocabulary: its descriptions of the modes, its output formats as download
+// buttons, its defaults as the placeholders of empty inputs.
+function takeVocabulary(am) {
+  if (vocabulary) return;
+  vocabulary = am.vocabulary;
+  for (const option of ui.mode.options) {
+    const mode = vocabulary.modes.find((e) => e.name === option.value);
+    if (mode) option.title = mode.description;
+  }
+  const png = ui.downloads.querySelector('[data-format=png]');
+  for (const f of vocabulary.outputFormats) {
+    if (f.needsInstance) continue;  // a CG:SHOP solution needs its instance
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.dataset.testid = `download-${f.name}`;
+    b.dataset.format = f.name;
+    b.textContent = f.extension;
+    b.title = f.description;
+    b.disabled = lastResult === null;
+    b.addEventListener('click', () => download(f.name));
+    ui.downloads.insertBefore(b, png);
+  }
+  syncOptionInputs();
 }
 
 // ---- running --------------------------------------------------------------------------------
@@ -253,11 +289,13 @@ function show(am, pslg, input, options, m, wallMs) {
     targetMet: s.targetMet ?? true,
     inputVertices: nInput,
     wallMilliseconds: round(wallMs, 1),
+    options,  // as the page asked for them
   };
   renderStats(result);
   ui.stats.dataset.result = JSON.stringify(result);
   ui.stats.dataset.runs = String(++runs);
-  for (const b of document.querySelectorAll('[data-format]')) b.disabled = false;
+  takeVocabulary(am);
+  for (const b of ui.downloads.querySelectorAll('[data-format]')) b.disabled = false;
   const warnings = s.warnings && s.warnings.length ? `\n${s.warnings.slice(0, 3).join('\n')}` : '';
   const verdict = options.mode === 'acute' || options.mode === 'nonobtuse'
     ? (result.certified ? 'certified ' + (options.mode === 'acute' ? 'acute' : 'non-obtuse') : 'NOT certified: the budget ran out (the best mesh so far is shown)')
@@ -330,11 +368,6 @@ function buildLegend() {
 }
 
 // ---- downloads ----------------------------------------------------------------------------
-const WRITERS = {
-  node: ['toNode', 'node', 'text/plain'], ele: ['toEle', 'ele', 'text/plain'],
-  poly: ['toPoly', 'poly', 'text/plain'], obj: ['toOBJ', 'obj', 'model/obj'],
-  svg: ['toSVG', 'svg', 'image/svg+xml'], json: ['toJSON', 'json', 'application/json'],
-};
 
 function saveBlob(blob, name) {
   const a = document.createElement('a');
@@ -353,10 +386,8 @@ function download(format) {
     ui.view.toBlob((blob) => saveBlob(blob, `${label}.png`), 'image/png');
     return;
   }
-  const [fn, ext, type] = WRITERS[format];
-  let out = am[fn](mesh);
-  if (typeof out !== 'string') out = JSON.stringify(out);
-  saveBlob(new Blob([out], { type }), `${label}.${ext}`);
+  const f = am.vocabulary.outputFormats.find((e) => e.name === format);
+  saveBlob(new Blob([am.write(mesh, format)], { type: f.mediaType }), `${label}${f.extension}`);
 }
 
 // ---- URL state ------------------------------------------------------------------------------
@@ -435,9 +466,7 @@ function wire() {
   ui.fit.addEventListener('click', () => view.fit());
   ui.showEdges.addEventListener('change', () => { view.showEdges = ui.showEdges.checked; view.requestRender(); });
   ui.showSteiner.addEventListener('change', () => { view.showSteiner = ui.showSteiner.checked; view.requestRender(); });
-  for (const b of document.querySelectorAll('[data-format]')) {
-    b.addEventListener('click', () => download(b.dataset.format));
-  }
+  ui.downloads.querySelector('[data-format=png]').addEventListener('click', () => download('png'));
   // Drag and drop anywhere on the page.
   let depth = 0;
   window.addEventListener('dragenter', (e) => { e.preventDefault(); depth++; ui.dropHint.hidden = false; });

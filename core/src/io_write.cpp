@@ -480,34 +480,39 @@ std::string formatCgshopSolution(const Mesh& m, const std::string& instanceUid,
   return s;
 }
 
+std::string formatMesh(OutputFormat format, const Mesh& m) {
+  switch (format) {
+    case OutputFormat::Node: return formatNode(m);
+    case OutputFormat::Ele: return formatEle(m);
+    case OutputFormat::Poly: return formatPoly(m);
+    case OutputFormat::Json: return formatJson(m);
+    case OutputFormat::Off: return formatOff(m);
+    case OutputFormat::Obj: return formatObj(m);
+    case OutputFormat::Svg: return formatSvg(m);
+    case OutputFormat::Cgshop: break;
+  }
+  return {};
+}
+
 ParseResult writeMeshFiles(const Mesh& m, const std::string& base,
                            const std::vector<std::string>& formats) {
-  using Formatter = std::string (*)(const Mesh&);
-  struct Entry {
-    const char* name;
-    Formatter f;
-  };
-  static const Entry kFormats[] = {{"node", formatNode}, {"ele", formatEle},
-                                   {"poly", formatPoly}, {"json", formatJson},
-                                   {"off", formatOff},   {"obj", formatObj},
-                                   {"svg", formatSvg}};
   ParseResult r;
-  std::vector<Formatter> todo;
+  std::vector<OutputFormat> todo;
   for (const std::string& name : formats) {
-    Formatter f = nullptr;
-    for (const Entry& e : kFormats)
-      if (name == e.name) f = e.f;
-    if (!f) {
+    OutputFormat f;
+    if (!parseName(name, f) || infoOf(f).needsInstance) {
+      std::string names;
+      for (const OutputFormatInfo& e : kOutputFormats)
+        if (!e.needsInstance) names += std::string(e.name) + ", ";
       r.ok = false;
-      r.message = "expected an output format among node, ele, poly, json, off, obj, svg, "
-                  "found '" + name + "'";
+      r.message = "expected an output format among " + names + "found '" + name + "'";
       return r;
     }
     todo.push_back(f);
   }
   for (size_t i = 0; i < formats.size(); ++i) {
     std::string error;
-    if (!writeFile(base + "." + formats[i], todo[i](m), error)) {
+    if (!writeFile(base + infoOf(todo[i]).extension, formatMesh(todo[i], m), error)) {
       r.ok = false;
       r.message = error;
       return r;

@@ -400,7 +400,7 @@ Result meshInRange(const Pslg& input, const Options& options) {
                   options.mode == Mode::Acute;
   Options target = options;
   if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0)
-    target.minAngle = 20;  // Triangle's -q default
+    target.minAngle = kQualityDefaultMinAngle;
   if (refining) warnAboutInputAngles(input, target, stats);
   std::vector<uint8_t> freeVertex;
   std::vector<detail::ExactVertex> exact;

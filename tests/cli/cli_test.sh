@@ -253,6 +253,19 @@ check "exact feet: fewer points" node -e "
   const fs = require('fs');
   const count = f => JSON.parse(fs.readFileSync(f, 'utf8')).steiner_points_x.length;
   process.exit(count('$work/feet.solution.json') * 2 < count('$work/nofeet.solution.json') ? 0 : 1);"
+# The input policy on an instance the test makes: exact segments and feet by default.
+node "$here/../js/generated-instance.mjs" >"$work/generated.instance.json"
+check "policy: CG:SHOP instance meshed with exact feet" \
+  run 0 --mode nonobtuse --stats --format cgshop,json -o "$work/gen" "$work/generated.instance.json"
+check "policy: exact points counted" grep -qE '"exactPoints": [1-9][0-9]*,' "$work/out"
+check "policy: same as asking for both" \
+  run 0 --mode nonobtuse --exact-segments --exact-feet --format json -o "$work/gen-asked" "$work/generated.instance.json"
+check "policy: same mesh" cmp -s "$work/gen.json" "$work/gen-asked.json"
+check "policy: --no-exact-feet turns it off" \
+  run 0 --mode nonobtuse --stats --no-exact-feet --no-output "$work/generated.instance.json"
+check "policy: no exact points" grep -qF '"exactPoints": 0,' "$work/out"
+check "did you mean" run 2 --mode non-obtuse "$work/A.poly"
+check "did you mean message" stderr_has "unknown mode 'non-obtuse' (delaunay, cdt, quality, nonobtuse, acute): did you mean 'nonobtuse'?"
 check "help lists cgshop" run 0 --help
 check "help text cgshop" stdout_has "cgshop: BASE.solution.json"
 

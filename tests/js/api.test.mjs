@@ -112,10 +112,12 @@ test('a few CG:SHOP 2025 instances: parsed, constrained, non-obtuse or honestly 
   for (const f of files.filter((_, i) => i % 15 === 0)) {
     const inst = load(am, join(dir, f));
     assert.equal(typeof inst.instanceUid, 'string');
-    const m = am.mesh(inst, { mode: 'nonobtuse', timeLimit: 10, exactSegments: true });
+    // The input policy (as the CLI's): exact segments and exact feet for an instance.
+    const m = am.mesh(inst, { mode: 'nonobtuse', timeLimit: 10 });
     checkShape(inst, m);
     checkValid(inst, m);
     assert.equal(m.options.exactSegments, true);
+    assert.equal(m.options.exactFeet, true);
     // The verifier is exact: every Steiner point on a segment lies exactly on it.
     for (let v = 0; v < m.vertexKind.length; ++v)
       if (m.vertexKind[v] === 2)
@@ -132,8 +134,9 @@ test('exact feet: rationals in the mesh and the CG:SHOP solution, non-obtuse exa
   const { sharedData } = await import('./helpers.mjs');
   // Tilted hull edges with input vertices within a unit of them.
   const inst = load(am, join(sharedData, 'cgshop2025', 'point-set_250_3c338713.instance.json'));
-  const plain = am.mesh(inst, { mode: 'nonobtuse', exactSegments: true });
-  const m = am.mesh(inst, { mode: 'nonobtuse', exactSegments: true, exactFeet: true });
+  // Exact feet are the input policy's default for an instance; exactFeet: false turns them off.
+  const plain = am.mesh(inst, { mode: 'nonobtuse', exactFeet: false });
+  const m = am.mesh(inst, { mode: 'nonobtuse' });
   checkShape(inst, m);
   checkValid(inst, m);
   assert.equal(m.options.exactFeet, true);

@@ -141,6 +141,67 @@ test('quality beyond 40 degrees: the page says the bound was not reached and why
   await context.close();
 });
 
+test('quality defaults are the mesher\'s: 20 degrees only when neither bound is given', async () => {
+  const { qualityMinAngle } = am.vocabulary.defaults;
+  // Only an area bound: the page asks for nothing more, and the mesh keeps angles below 20.
+  const areaOnly = await open('?text=Hi&mode=quality&maxArea=1e9');
+  const a = await result(areaOnly.page);
+  assert.deepEqual(a.options, { mode: 'quality', maxArea: 1e9 });
+  assert.ok(a.minAngle < qualityMinAngle, `min angle ${a.minAngle}: a minimum angle was imposed`);
+  assert.equal(await areaOnly.page.getAttribute('#minAngle', 'placeholder'), '0');
+  assert.deepEqual(areaOnly.errors, []);
+  await areaOnly.context.close();
+  // No bound at all: the mesher's own default minimum angle.
+  const none = await open('?text=Hi&mode=quality');
+  const n = await result(none.page);
+  assert.deepEqual(n.options, { mode: 'quality' });
+  assert.ok(n.minAngle >= qualityMinAngle, `min angle ${n.minAngle}`);
+  await none.page.fill('#minAngle', '');
+  await none.page.dispatchEvent('#minAngle', 'change');
+  assert.equal(await none.page.getAttribute('#minAngle', 'placeholder'), String(qualityMinAngle));
+  assert.deepEqual(none.errors, []);
+  await none.context.close();
+});
+
+test('the page\'s modes, downloads and option defaults are the mesher\'s vocabulary', async () => {
+  const { page, errors, context } = await open('');
+  const { modes, outputFormats, defaults } = am.vocabulary;
+  const options = await page.$$eval('[data-testid=mode-select] option', (os) => os.map((o) => [o.value, o.title]));
+  for (const [value, title] of options) {
+    const mode = modes.find((m) => m.name === value);
+    assert.ok(mode, `the page offers mode '${value}', which the mesher does not have`);
+    assert.equal(title, mode.description);
+  }
+  const buttons = await page.$$eval('#downloads [data-format]', (bs) => bs.map((b) => [b.dataset.format, b.disabled]));
+  assert.deepEqual(buttons.map(([f]) => f), [...outputFormats.filter((f) => !f.needsInstance).map((f) => f.name), 'png']);
+  assert.ok(buttons.every(([, disabled]) => !disabled), 'downloads are enabled once a mesh is shown');
+  for (const key of ['maxAngle', 'minAngle', 'maxArea', 'maxSteiner'])
+    assert.equal(Number(await page.inputValue(`#${key}`)), defaults[key], `#${key} starts at the mesher's default`);
+  const off = await downloadText(page, 'download-off');
+  assert.equal(off.name, 'Acute.off');
+  assert.match(off.text, /^OFF\n/);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('an uploaded CG:SHOP instance meshes as the package and the CLI mesh it (exact feet)', async () => {
+  const { generatedInstance } = await import('../js/generated-instance.mjs');
+  const dir = mkdtempSync(join(tmpdir(), 'acutemesh-web-'));
+  const path = join(dir, 'generated.instance.json');
+  writeFileSync(path, generatedInstance());
+  const { page, errors, context } = await open('?mode=nonobtuse');
+  await upload(page, path);
+  const r = await runAndWait(page);
+  const expected = am.mesh(am.parseJson(generatedInstance()), { mode: 'nonobtuse' });
+  assert.ok(expected.exactPoints.length > 0);
+  const m = meshFromJson((await downloadText(page, 'download-json')).text);
+  assert.equal(r.triangles, expected.stats.triangles);
+  assert.deepEqual(m.triangles, expected.triangles);
+  assert.deepEqual(m.points, expected.points);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a file over the size limit is refused with a message; the page meshes on', async () => {
   const { page, errors, context } = await open('');
   const runs = await page.getAttribute('[data-testid=stats]', 'data-runs');

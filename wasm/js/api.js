@@ -1,7 +1,9 @@
-// The JavaScript API over the Embind module (bindings.cpp): argument checks, defaults, enum
-// names, errors, and one wasm instance per API object. Shared by every entry point (index.js
-// for browsers and bundlers, node.js, single.js); each entry supplies how to get the compiled
-// WebAssembly.Module, this file does the rest.
+// The JavaScript API over the Embind module (bindings.cpp): argument checks, defaults, errors,
+// and one wasm instance per API object. Shared by every entry point (index.js for browsers and
+// bundlers, node.js, single.js); each entry supplies how to get the compiled
+// WebAssembly.Module, this file does the rest. The names of modes, fill rules, formats and
+// statuses, and the options' defaults, come from the core (core_vocabulary, exported as
+// `vocabulary`): none is written here.
 
 /** Errors from acutemesh itself; `code` says what kind (see index.d.ts). */
 export class AcuteMeshError extends Error {
@@ -12,11 +14,6 @@ export class AcuteMeshError extends Error {
   }
 }
 
-// The C++ enums' values (acutemesh.h), by the names the CLI uses.
-const MODES = { delaunay: 0, cdt: 1, quality: 2, nonobtuse: 3, acute: 4 };
-const FILLS = { triangle: 0, evenodd: 1, nonzero: 2 };
-const STATUS_OK = 0, STATUS_TARGET_NOT_MET = 1, STATUS_BAD_INPUT = 2, STATUS_CANCELLED = 3;
-const FORMATS = ['Unknown', 'Poly', 'Node', 'JsonPslg', 'CgshopInstance'];  // InputFormat
 const WASM_PAGE = 65536;
 const INITIAL_MEMORY = 16 * 1024 * 1024;  // -sINITIAL_MEMORY in wasm/CMakeLists.txt
 
@@ -94,7 +91,8 @@ function checkObject(value, what) {
     throw new TypeError(`${what} must be an object, not ${describe(value)}`);
 }
 
-function toPslg(pslg, what = 'pslg') {
+// `names` checks names against the core's vocabulary (makeNames below).
+function toPslg(pslg, names, what = 'pslg') {
   checkObject(pslg, what);
   if (pslg.points === undefined) throw new TypeError(`${what}.points is missing`);
   return {
@@ -102,6 +100,8 @@ function toPslg(pslg, what = 'pslg') {
     segments: pslg.segments == null ? new Uint32Array(0) : toIndices(pslg.segments, `${what}.segments`, 2),
     holes: pslg.holes == null ? new Float64Array(0) : toCoordinates(pslg.holes, `${what}.holes`),
     fill: pslg.fill,
+    // What a parser read it from (ParsedPslg.format): the core's input policy applies to it.
+    format: names.check(pslg.format, 'inputFormat', `${what}.format`, undefined),
   };
 }
 
@@ -158,12 +158,23 @@ function checkMeshIndices(mesh, what = 'mesh') {
   });
 }
 
-function enumOption(value, table, what, fallback) {
-  if (value === undefined) return fallback;
-  if (typeof value !== 'string') throw new TypeError(`${what} must be a string, not ${describe(value)}`);
-  if (!(value in table))
-    throw badInput(`unknown ${what} '${value}' (${Object.keys(table).join(', ')})`);
-  return value;
+// Checks of names (modes, fill rules, formats) against the vocabulary's tables; an unknown one
+// is a BAD_INPUT with the core's message (the choices, and the nearest name when one is close).
+function makeNames(vocabulary, unknownName) {
+  const sets = {
+    mode: new Set(vocabulary.modes.map((e) => e.name)),
+    fill: new Set(vocabulary.fillRules.map((e) => e.name)),
+    inputFormat: new Set(vocabulary.inputFormats.map((e) => e.name)),
+    outputFormat: new Set(vocabulary.outputFormats.map((e) => e.name)),
+  };
+  return {
+    check(value, kind, what, fallback) {
+      if (value === undefined) return fallback;
+      if (typeof value !== 'string') throw new TypeError(`${what} must be a string, not ${describe(value)}`);
+      if (!sets[kind].has(value)) throw badInput(unknownName(kind, value));
+      return value;
+    },
+  };
 }
 
 function numberOption(options, key, fallback) {
@@ -174,37 +185,47 @@ function numberOption(options, key, fallback) {
 }
 
 // The options that describe the job, as names (what a mesh result carries, and what
-// validate() reads back); functions and signals are handled by mesh() itself.
-function toOptions(options, pslgFill) {
+// validate() reads back); functions and signals are handled by mesh() itself. `core` holds the
+// names' checks and the defaults (makeApi); `input` is toPslg's result.
+function toOptions(options, input, core) {
   if (options === undefined) options = {};
   checkObject(options, 'options');
-  const mode = enumOption(options.mode, MODES, 'mode', 'cdt');
-  const fill = enumOption(options.fill, FILLS, 'fill rule', pslgFill === undefined ? 'triangle' : pslgFill);
+  const { names, defaults } = core;
+  const mode = names.check(options.mode, 'mode', 'mode', defaults.mode);
+  const fill = names.check(options.fill, 'fill', 'fill rule', input.fill === undefined ? defaults.fill : input.fill);
   for (const key of ['convexHull', 'exactSegments', 'exactFeet'])
     if (options[key] !== undefined && typeof options[key] !== 'boolean')
       throw new TypeError(`options.${key} must be a boolean, not ${describe(options[key])}`);
-  const maxSteiner = numberOption(options, 'maxSteiner', 0);
+  const maxSteiner = numberOption(options, 'maxSteiner', defaults.maxSteiner);
   if (!Number.isInteger(maxSteiner) || maxSteiner < 0 || maxSteiner > 0xffffffff)
     throw badInput(`maxSteiner must be an integer from 0 (automatic) to 4294967295, not ${maxSteiner}`);
-  const timeLimit = numberOption(options, 'timeLimit', 0);
+  const timeLimit = numberOption(options, 'timeLimit', defaults.timeLimit);
   if (!(timeLimit >= 0) || timeLimit === Infinity)
     throw badInput(`timeLimit must be a number of seconds >= 0 (0: none), not ${timeLimit}`);
+  const flag = (key) => (options[key] === undefined ? defaults[key] : options[key]);
   return {
     mode,
     fill,
-    convexHull: options.convexHull === true,
-    exactSegments: options.exactSegments === true,
-    exactFeet: options.exactFeet === true,
+    convexHull: flag('convexHull'),
+    exactSegments: flag('exactSegments'),
+    exactFeet: flag('exactFeet'),
     // The core checks the ranges of these three and names the option when one is wrong.
-    maxAngle: numberOption(options, 'maxAngle', 90),
-    minAngle: numberOption(options, 'minAngle', 0),
-    maxArea: numberOption(options, 'maxArea', 0),
+    maxAngle: numberOption(options, 'maxAngle', defaults.maxAngle),
+    minAngle: numberOption(options, 'minAngle', defaults.minAngle),
+    maxArea: numberOption(options, 'maxArea', defaults.maxArea),
     maxSteiner,
     timeLimit,
   };
 }
 
-const toCoreOptions = (o) => ({ ...o, mode: MODES[o.mode], fill: FILLS[o.fill] });
+// mesh()'s options for a parsed input: the core's input policy, as the CLI applies it (a
+// CG:SHOP instance meshed with exact segments, and exact feet unless options.exactFeet is
+// given). validate() takes the options a mesh was made with as they are.
+function withInputPolicy(resolved, input, options, core) {
+  if (input.format === undefined) return resolved;
+  const exactFeetChosen = options !== undefined && options.exactFeet !== undefined;
+  return { ...resolved, ...core.inputPolicy(input.format, exactFeetChosen, resolved) };
+}
 
 function checkSignal(signal) {
   if (signal === undefined) return;
@@ -216,10 +237,13 @@ function checkText(text, what) {
   if (typeof text !== 'string') throw new TypeError(`${what} must be a string, not ${describe(text)}`);
 }
 
-function parsed(r, fill) {
+// A parser's result: the fill rule comes when the input policy implies one (JSON rings).
+function parsed(r) {
   if (!r.ok) throw badInput(r.message);
   const out = { points: r.points, segments: r.segments, holes: r.holes };
-  if (fill) out.fill = fill;
+  if (r.fill !== undefined) out.fill = r.fill;
+  out.format = r.format;
+  if (r.format === 'cgshop') out.instanceUid = r.instanceUid;
   out.warnings = r.warnings;
   return out;
 }
@@ -229,12 +253,12 @@ function parsed(r, fill) {
 // Closed outlines (GeoJSON polygon rings, font contours) into a PSLG: each ring's points
 // become vertices and consecutive points segments, closing back to the first. A last point
 // equal to the first (GeoJSON repeats it) is dropped. The same rules as the core's JSON
-// reader for {"rings": ...}.
-function ringsToPslg(rings, options) {
+// reader for {"rings": ...}, whose fill rule the input policy gives (core.defaults.ringsFill).
+function ringsToPslg(rings, options, core) {
   if (!Array.isArray(rings)) throw new TypeError(`rings must be an array of rings, not ${describe(rings)}`);
   if (options === undefined) options = {};
   checkObject(options, 'options');
-  const fill = enumOption(options.fill, FILLS, 'fill rule', 'evenodd');
+  const fill = core.names.check(options.fill, 'fill', 'fill rule', core.defaults.ringsFill);
   const flat = rings.map((ring, r) => toCoordinates(ring, `rings[${r}]`));
   let total = 0;
   const counts = flat.map((xy, r) => {
@@ -258,6 +282,15 @@ function ringsToPslg(rings, options) {
     base += n;
   });
   return { points, segments, holes: new Float64Array(0), fill };
+}
+
+// The vocabulary is shared by every API object: read-only all the way down.
+function deepFreeze(value) {
+  if (typeof value === 'object' && value !== null) {
+    for (const v of Object.values(value)) deepFreeze(v);
+    Object.freeze(value);
+  }
+  return value;
 }
 
 // --- instances ----------------------------------------------------------------------------
@@ -358,8 +391,22 @@ function makeApi(factory, compiled, memoryLimit, M) {
     return call((I) => I.core_format(format, mesh));
   };
 
+  // The core's names and defaults (the same in every instance of the module), and its input
+  // policy, for the argument checks.
+  const vocabulary = deepFreeze(M.core_vocabulary());
+  const core = {
+    names: makeNames(vocabulary, (kind, name) => call((I) => I.core_unknownName(kind, name))),
+    defaults: vocabulary.defaults,
+    inputPolicy: (format, exactFeetChosen, options) =>
+      call((I) => I.core_inputPolicy(format, exactFeetChosen, options)),
+  };
+
   const api = {
     version: M.core_version(),
+
+    // Modes, fill rules, statuses, vertex kinds, input and output formats ({name, value,
+    // description, ...} each, in the core's order) and the options' defaults.
+    vocabulary,
 
     parsePoly(text, options = {}) {
       checkText(text, 'text');
@@ -379,22 +426,19 @@ function makeApi(factory, compiled, memoryLimit, M) {
     },
 
     // JSON in any of the core's three shapes: a PSLG, {"rings": ...} (fill 'evenodd' unless
-    // the caller says otherwise) or a CG:SHOP 2025 instance (instanceUid set).
+    // the caller says otherwise) or a CG:SHOP 2025 instance (format 'cgshop', instanceUid set).
     parseJson(text, options = {}) {
       checkText(text, 'text');
       checkObject(options, 'options');
       const name = options.name === undefined ? 'input.json' : String(options.name);
-      const r = call((I) => I.core_parseJson(utf8.encode(text), name));
-      const out = parsed(r, r.ok && r.hasRings ? 'evenodd' : undefined);
-      if (r.ok && FORMATS[r.format] === 'CgshopInstance') out.instanceUid = r.instanceUid;
-      return out;
+      return parsed(call((I) => I.core_parseJson(utf8.encode(text), name)));
     },
 
-    fromRings: ringsToPslg,
+    fromRings: (rings, options) => ringsToPslg(rings, options, core),
 
     mesh(pslg, options = {}) {
-      const input = toPslg(pslg);
-      const opts = toOptions(options, input.fill);
+      const input = toPslg(pslg, core.names);
+      const opts = withInputPolicy(toOptions(options, input, core), input, options, core);
       const { onProgress, signal } = options;
       if (onProgress !== undefined && typeof onProgress !== 'function')
         throw new TypeError(`options.onProgress must be a function, not ${describe(onProgress)}`);
@@ -416,10 +460,10 @@ function makeApi(factory, compiled, memoryLimit, M) {
         }
         return failed || (signal !== undefined && signal.aborted);
       } : undefined;
-      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, toCoreOptions(opts), progress));
+      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, opts, progress));
       if (failed) throw callbackError;
-      if (r.status === STATUS_CANCELLED) throw abortError(signal);
-      if (r.status === STATUS_BAD_INPUT) throw badInput(r.message);
+      if (r.status === 'cancelled') throw abortError(signal);
+      if (r.status === 'bad-input') throw badInput(r.message);
       return {
         points: r.points,
         triangles: r.triangles,
@@ -427,18 +471,25 @@ function makeApi(factory, compiled, memoryLimit, M) {
         vertexKind: r.vertexKind,
         exactPoints: r.exactPoints,
         stats: r.stats,
-        status: r.status === STATUS_TARGET_NOT_MET ? 'target-not-met' : 'ok',
+        status: r.status,
         message: r.message,
         options: opts,
       };
     },
 
     validate(pslg, m, options) {
-      const input = toPslg(pslg);
+      const input = toPslg(pslg, core.names);
       const mesh = toMesh(m);
       if (options === undefined) options = m.options === undefined ? {} : m.options;
-      const opts = toOptions(options, input.fill);
-      return call((I) => I.core_validate(input.points, input.segments, input.holes, mesh, toCoreOptions(opts)));
+      const opts = toOptions(options, input, core);
+      return call((I) => I.core_validate(input.points, input.segments, input.holes, mesh, opts));
+    },
+
+    // Any writer by its format's name (vocabulary.outputFormats); 'cgshop' needs the instance.
+    write(m, format, instance) {
+      if (core.names.check(format, 'outputFormat', 'format', undefined) === undefined)
+        throw new TypeError('format must be a string, not undefined');
+      return format === 'cgshop' ? api.toCgshop(m, instance) : formatter(format)(m);
     },
 
     toNode: formatter('node'),

@@ -21,6 +21,24 @@ export type Mode =
  */
 export type FillRule = 'triangle' | 'evenodd' | 'nonzero';
 
+/**
+ * What a parser read (ParsedPslg.format): 'poly', 'node', 'json' (a PSLG or rings) or 'cgshop'
+ * (a CG:SHOP 2025 instance); 'unknown' for input not read from a text.
+ */
+export type InputFormat = 'unknown' | 'poly' | 'node' | 'json' | 'cgshop';
+
+/** What a mesh can be written as (write(), vocabulary.outputFormats); 'cgshop' needs the instance. */
+export type OutputFormat = 'node' | 'ele' | 'poly' | 'json' | 'off' | 'obj' | 'svg' | 'cgshop';
+
+/**
+ * The core's statuses: mesh() returns 'ok' and 'target-not-met' (MeshResult.status), and
+ * throws for the other two (AcuteMeshError 'BAD_INPUT'; the signal's reason when cancelled).
+ */
+export type Status = 'ok' | 'target-not-met' | 'bad-input' | 'cancelled';
+
+/** The names of MeshResult.vertexKind's numbers (vocabulary.vertexKinds[k].name for k). */
+export type VertexKindName = 'input' | 'unused' | 'segment' | 'free';
+
 /** A planar straight-line graph: flat arrays, x/y interleaved, 0-based vertex indices. */
 export interface Pslg {
   /** x0, y0, x1, y1, ... */
@@ -39,10 +57,18 @@ export interface PslgInput {
   segments?: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
   holes?: Float64Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
   fill?: FillRule;
+  /** What it was read from (ParsedPslg.format): mesh() applies the input policy for it. */
+  format?: InputFormat;
 }
 
 /** A parser's result: the PSLG and what the parser tolerated ("NAME:LINE: ..."). */
 export interface ParsedPslg extends Pslg {
+  /**
+   * What the text was. mesh() applies the core's input policy to it, as the CLI does: a
+   * 'cgshop' instance is meshed with exactSegments, and with exactFeet unless options.exactFeet
+   * is given (MeshResult.options says so, and validate() checks with them).
+   */
+  format: InputFormat;
   warnings: string[];
   /** CG:SHOP 2025 instances only (parseJson). */
   instanceUid?: string;
@@ -81,13 +107,14 @@ export interface MeshOptions {
   /**
    * Steiner points on segments exactly on their lines where a representable point is near
    * (integer coordinates), not within rounding of them: for exact checkers such as the
-   * CG:SHOP 2025 verifier; costs points. Default false.
+   * CG:SHOP 2025 verifier; costs points. Default false; always on for a parsed CG:SHOP instance.
    */
   exactSegments?: boolean;
   /**
    * Non-obtuse: Steiner points on segments may stand for exact altitude feet, rationals no
    * double holds (see MeshResult.exactPoints): far fewer points next to tilted segments. For
-   * outputs that hold rationals (toCgshop, toJSON). Default false.
+   * outputs that hold rationals (toCgshop, toJSON). Default false; true for a parsed CG:SHOP
+   * instance unless given.
    */
   exactFeet?: boolean;
   /** Degrees; acute mode: every angle < maxAngle (60 < maxAngle <= 90; default 90, exact). */
@@ -165,7 +192,11 @@ export interface MeshResult {
   triangles: Uint32Array;
   /** a, b per mesh edge lying on an input segment. */
   segments: Uint32Array;
-  /** Per vertex: 0 input, 1 unused input (duplicate or outside), 2 on a segment, 3 free. */
+  /**
+   * Per vertex, a number whose name is vocabulary.vertexKinds[number].name: 0 'input', 1 'unused'
+   * (an input vertex no triangle uses: a duplicate, or outside), 2 'segment' (a Steiner point
+   * on an input segment), 3 'free' (a Steiner point on none).
+   */
   vertexKind: Uint8Array;
   /**
    * With options.exactFeet: the vertices whose exact place no double holds, by vertex; points
@@ -179,7 +210,7 @@ export interface MeshResult {
    * input angles below the minimum angle stay. Not an error: the best mesh so far, with
    * stats.targetMet false.
    */
-  status: 'ok' | 'target-not-met';
+  status: Extract<Status, 'ok' | 'target-not-met'>;
   /** Empty when status is 'ok'; otherwise why. */
   message: string;
   options: ResolvedOptions;
@@ -231,6 +262,39 @@ export interface RingsOptions {
   fill?: FillRule;
 }
 
+/** An entry of a vocabulary table: the name, the core's enum value, one line about it. */
+export interface Named<Name extends string> {
+  readonly name: Name;
+  readonly value: number;
+  readonly description: string;
+}
+
+export interface OutputFormatInfo extends Named<OutputFormat> {
+  /** Appended to a base name, dot included ('.node', '.solution.json'). */
+  readonly extension: string;
+  /** For downloads ('text/plain', 'image/svg+xml', ...). */
+  readonly mediaType: string;
+  /** Holds coordinates as doubles: exact points (options.exactFeet) come out rounded. */
+  readonly roundsExactPoints: boolean;
+  /** Written from the CG:SHOP instance too (toCgshop), not from the mesh alone. */
+  readonly needsInstance: boolean;
+}
+
+/** The core's names (the CLI spells them the same) and the options' defaults. */
+export interface Vocabulary {
+  readonly modes: ReadonlyArray<Named<Mode>>;
+  readonly fillRules: ReadonlyArray<Named<FillRule>>;
+  readonly statuses: ReadonlyArray<Named<Status>>;
+  readonly vertexKinds: ReadonlyArray<Named<VertexKindName>>;
+  readonly inputFormats: ReadonlyArray<Named<InputFormat>>;
+  readonly outputFormats: ReadonlyArray<OutputFormatInfo>;
+  /**
+   * mesh()'s defaults; qualityMinAngle is what quality mode aims at when neither minAngle nor
+   * maxArea is given, ringsFill the fill rule of rings (fromRings, JSON rings).
+   */
+  readonly defaults: Readonly<ResolvedOptions> & { readonly qualityMinAngle: number; readonly ringsFill: FillRule };
+}
+
 export interface MemoryInfo {
   /** Bytes of wasm memory (grows, never shrinks). */
   heapSize: number;
@@ -242,6 +306,8 @@ export interface AcuteMesh {
   readonly version: string;
   /** The compiled module (can be posted to workers and passed to init as wasmModule). */
   readonly wasmModule: WasmModule;
+  /** The core's names of modes, fill rules, statuses, vertex kinds and formats, and the defaults. */
+  readonly vocabulary: Vocabulary;
   /** Triangle's .poly format. */
   parsePoly(text: string, options?: ParsePolyOptions): ParsedPslg;
   /** Triangle's .node format: a point set. */
@@ -262,8 +328,17 @@ export interface AcuteMesh {
   toOBJ(mesh: MeshInput): string;
   toSVG(mesh: MeshInput): string;
   /** The CG:SHOP 2025 solution of a mesh of `instance` (parseJson of the instance file). */
-  toCgshop(mesh: MeshInput, instance: { instanceUid?: string; points: Pslg['points'] | ArrayLike<number> }): string;
+  toCgshop(mesh: MeshInput, instance: CgshopInstance): string;
+  /** The writer of a format by its name (the same text as toNode ... toSVG, toCgshop). */
+  write(mesh: MeshInput, format: Exclude<OutputFormat, 'cgshop'>): string;
+  write(mesh: MeshInput, format: 'cgshop', instance: CgshopInstance): string;
   memory(): MemoryInfo;
+}
+
+/** What toCgshop needs of the instance: parseJson's result for it. */
+export interface CgshopInstance {
+  instanceUid?: string;
+  points: Pslg['points'] | ArrayLike<number>;
 }
 
 export interface InitOptions {

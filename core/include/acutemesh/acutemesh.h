@@ -60,12 +60,15 @@ struct Progress {
   uint32_t vertices;     // current vertex count
 };
 
+// Quality mode's minimum angle when neither minAngle nor maxArea is given (Triangle's -q).
+constexpr double kQualityDefaultMinAngle = 20.0;
+
 struct Options {
   Mode mode = Mode::Cdt;
   FillRule fill = FillRule::Triangle;
   bool convexHull = false;        // keep every triangle of the convex hull (Triangle's -c)
   double maxAngle = 90.0;         // degrees, acute mode: every angle < maxAngle
-  double minAngle = 0.0;          // degrees, quality target (0 = none)
+  double minAngle = 0.0;          // degrees, quality target (0 = none; see kQualityDefaultMinAngle)
   double maxArea = 0.0;           // area bound (0 = none)
   uint32_t maxSteiner = 0;        // Steiner point budget (0 = automatic: 50 per input vertex,
                                   // at least 20000, plus room for the area bound)

@@ -12,10 +12,9 @@
 #include <vector>
 
 #include "acutemesh/acutemesh.h"
+#include "acutemesh/vocabulary.h"  // InputFormat, OutputFormat and their names
 
 namespace acutemesh {
-
-enum class InputFormat { Unknown, Poly, Node, JsonPslg, CgshopInstance };
 
 struct Input {
   Pslg pslg;
@@ -94,8 +93,31 @@ std::string formatSvg(const Mesh& m);
 std::string formatCgshopSolution(const Mesh& m, const std::string& instanceUid,
                                  size_t instanceVertexCount);
 
-// formats: any of "node", "ele", "poly", "json", "off", "obj", "svg".
+// The writer of `format` above (formatNode ... formatSvg); empty for OutputFormat::Cgshop,
+// which needs the instance (formatCgshopSolution).
+std::string formatMesh(OutputFormat format, const Mesh& m);
+
+// formats: names of kOutputFormats that need no instance ("node", "ele", ... "svg").
 ParseResult writeMeshFiles(const Mesh& m, const std::string& base,
                            const std::vector<std::string>& formats);
+
+// Options the caller chose on purpose, which the input policy leaves as they are.
+struct ChosenOptions {
+  bool fill = false;
+  bool exactFeet = false;
+};
+
+// What an input's kind implies for meshing it, applied alike for every caller (the CLI, the
+// JavaScript package's mesh() of a parsed input):
+//  - JSON rings have no hole points: their regions are found by nesting, fill EvenOdd;
+//  - a CG:SHOP 2025 instance is checked by an exact verifier, so exactSegments is on (a split
+//    point a rounding off its segment would leave a sliver), and its solutions hold
+//    rationals, so exactFeet is on.
+// Options in `chosen` stay as they are; exactSegments is only ever turned on.
+void applyInputPolicy(InputFormat format, bool hasRings, const ChosenOptions& chosen,
+                      Options& options);
+inline void applyInputPolicy(const Input& in, const ChosenOptions& chosen, Options& options) {
+  applyInputPolicy(in.format, in.hasRings, chosen, options);
+}
 
 }  // namespace acutemesh

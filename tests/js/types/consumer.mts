@@ -2,7 +2,7 @@
 // it, and, marked @ts-expect-error, misuses the types must reject (tsc fails on a marker
 // whose line is not an error, so both directions are checked).
 import init, { AcuteMeshError, createInstance } from 'acutemesh';
-import type { AcuteMesh, MeshResult, Pslg, MeshStats, ErrorCode } from 'acutemesh';
+import type { AcuteMesh, MeshResult, Pslg, MeshStats, ErrorCode, Mode, ParsedPslg, VertexKindName } from 'acutemesh';
 import initSingle from 'acutemesh/single';
 import { createMeshWorker, meshInWorker } from 'acutemesh/worker';
 import type { MeshWorker } from 'acutemesh/worker';
@@ -22,6 +22,13 @@ export async function use(text: string): Promise<number> {
   am.mesh({ points: [[0, 0], [1, 0], [0, 1]] }, { mode: 'delaunay' });
   am.mesh(rings);
   const { heapSize, allocated } = am.memory();
+  const mode: Mode = am.vocabulary.modes[0].name;
+  const svg: string = am.write(m, 'svg');
+  const parsed: ParsedPslg = am.parseJson(text);
+  const solution: string = am.write(am.mesh(parsed, { mode }), 'cgshop', parsed);
+  const kind: VertexKindName = am.vocabulary.vertexKinds[m.vertexKind[0]].name;
+  const quality: number = am.vocabulary.defaults.qualityMinAngle;
+  void [svg, solution, kind, quality, parsed.format === 'cgshop'];
   try {
     am.mesh({ points: [0, 0] });
   } catch (e) {
@@ -55,6 +62,12 @@ export async function use(text: string): Promise<number> {
   am.toSTL(m);
   // @ts-expect-error: text, not a number
   am.parsePoly(42);
+  // @ts-expect-error: no such format
+  am.write(m, 'stl');
+  // @ts-expect-error: a CG:SHOP solution needs its instance
+  am.write(m, 'cgshop');
+  // @ts-expect-error: the vocabulary is read-only
+  am.vocabulary.defaults.maxAngle = 80;
   void [bad, arr];
   return m.stats.triangles;
 }

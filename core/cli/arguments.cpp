@@ -1,0 +1,270 @@
+// The command line: options into an Arguments value, and the help text.
+#include "arguments.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <string_view>
+
+namespace acutemesh::cli {
+namespace {
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (start <= s.size()) {
+    size_t comma = s.find(',', start);
+    if (comma == std::string::npos) comma = s.size();
+    if (comma > start) out.push_back(s.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return out;
+}
+
+// "a, b or c": the names of a vocabulary table.
+template <class Entry, size_t N>
+std::string choices(const Entry (&table)[N]) {
+  std::string out;
+  for (size_t i = 0; i < N; ++i) out += std::string(i == 0 ? "" : i + 1 < N ? ", " : " or ") + table[i].name;
+  return out;
+}
+
+bool takesValue(const std::string& a) {
+  for (const char* option : {"-o", "--output", "--format", "--mode", "--max-angle", "--min-angle",
+                             "--max-area", "--max-steiner", "--fill", "--threads", "--time-limit"})
+    if (a == option) return true;
+  return false;
+}
+
+// The message for an option given last, without its value.
+std::string missingValue(const std::string& a) {
+  if (a == "-o" || a == "--output") return a + " needs a file name base";
+  if (a == "--format") return "--format needs a list, e.g. node,ele,svg";
+  if (a == "--mode") return "--mode needs " + choices(kModes);
+  if (a == "--fill") return "--fill needs " + choices(kFillRules);
+  if (a == "--max-steiner") return "--max-steiner needs a count";
+  if (a == "--threads") return "--threads needs a count";
+  if (a == "--time-limit") return "--time-limit needs seconds";
+  return a + " needs a number";
+}
+
+std::string readFormats(const std::string& v, Arguments& args) {
+  args.formats.clear();
+  for (const std::string& name : splitList(v)) {
+    OutputFormat f;
+    std::string message;
+    if (!parseName(name, f, &message)) return message;
+    args.formats.push_back(f);
+  }
+  return {};
+}
+
+std::string readBound(const std::string& a, const std::string& v, Options& opt) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (*end || v.empty() || !(x >= 0)) return a + " needs a number >= 0, not '" + v + "'";
+  if (a == "--max-angle") {
+    if (!(x > 60 && x <= 90)) return "--max-angle must be above 60 and at most 90";
+    opt.maxAngle = x;
+  } else if (a == "--min-angle") {
+    if (!(x < 60)) return "--min-angle must be below 60";
+    opt.minAngle = x;
+  } else {
+    opt.maxArea = x;
+  }
+  return {};
+}
+
+std::string readCount(const std::string& a, const std::string& v, Options& opt) {
+  char* end = nullptr;
+  if (a == "--max-steiner") {
+    const unsigned long long x = std::strtoull(v.c_str(), &end, 10);
+    if (*end || v.empty() || x == 0 || x > 4000000000ull)
+      return "--max-steiner needs a positive count, not '" + v + "'";
+    opt.maxSteiner = uint32_t(x);
+  } else {
+    const unsigned long x = std::strtoul(v.c_str(), &end, 10);
+    if (*end || v.empty() || v[0] == '-' || x == 0 || x > 1024)
+      return "--threads needs a count from 1 to 1024, not '" + v + "'";
+    opt.threads = unsigned(x);
+  }
+  return {};
+}
+
+// Applies option `a` with its value `v`: an error message, or empty.
+std::string readValue(const std::string& a, const std::string& v, Arguments& args) {
+  Options& opt = args.options;
+  std::string message;
+  if (a == "-o" || a == "--output") {
+    args.output = v;
+  } else if (a == "--format") {
+    return readFormats(v, args);
+  } else if (a == "--mode") {
+    if (!parseName(v, opt.mode, &message)) return message;
+  } else if (a == "--fill") {
+    if (!parseName(v, opt.fill, &message)) return message;
+    args.chosen.fill = true;
+  } else if (a == "--max-steiner" || a == "--threads") {
+    return readCount(a, v, opt);
+  } else if (a == "--time-limit") {
+    char* end = nullptr;
+    opt.timeLimit = std::strtod(v.c_str(), &end);
+    if (*end || !(opt.timeLimit > 0)) return "--time-limit needs a positive number";
+  } else {
+    return readBound(a, v, opt);
+  }
+  return {};
+}
+
+// Applies flag `a` (an option without a value): false when there is no such flag.
+bool readFlag(const std::string& a, Arguments& args) {
+  if (a == "--convex-hull") {
+    args.options.convexHull = true;
+  } else if (a == "--exact-segments") {
+    args.options.exactSegments = true;
+  } else if (a == "--exact-feet" || a == "--no-exact-feet") {
+    args.options.exactFeet = a == "--exact-feet";
+    args.chosen.exactFeet = true;
+  } else if (a == "--stats") {
+    args.stats = true;
+  } else if (a == "--no-output") {
+    args.writeOutput = false;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool Arguments::wants(OutputFormat f) const {
+  for (OutputFormat g : formats)
+    if (g == f) return true;
+  return false;
+}
+
+CommandLine parseCommandLine(int argc, const char* const* argv) {
+  CommandLine c;
+  Arguments& args = c.arguments;
+  auto fail = [&c](std::string message) {
+    c.action = CommandLine::UsageError;
+    c.error = std::move(message);
+    return c;
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-h" || a == "--help") {
+      c.action = CommandLine::Help;
+      return c;
+    } else if (a == "--version") {
+      c.action = CommandLine::Version;
+      return c;
+    } else if (takesValue(a)) {
+      if (i + 1 >= argc) return fail(missingValue(a));
+      std::string error = readValue(a, argv[++i], args);
+      if (!error.empty()) return fail(error);
+    } else if (readFlag(a, args)) {
+      continue;
+    } else if (a.size() > 1 && a[0] == '-') {
+      return fail("unknown option '" + a + "'");
+    } else if (args.input.empty()) {
+      args.input = a;
+    } else {
+      return fail("more than one input file ('" + args.input + "', '" + a + "')");
+    }
+  }
+  if (args.input.empty()) return fail("no input file");
+  return c;
+}
+
+namespace {
+
+constexpr size_t kHelpColumn = 23;  // where the descriptions of options start
+constexpr size_t kHelpWidth = 100;
+
+// `label` padded to the description column, then `text` wrapped to the help's width (lines
+// after the first indented two more).
+void addWrapped(std::string& out, const std::string& label, std::string_view text) {
+  std::string line = label;
+  line.resize(std::max(line.size() + 1, kHelpColumn), ' ');
+  const std::string indent(kHelpColumn + 2, ' ');
+  bool lineEmpty = true;
+  while (!text.empty()) {
+    const size_t space = text.find(' ');
+    const std::string_view word = text.substr(0, space);
+    text = space == std::string_view::npos ? std::string_view() : text.substr(space + 1);
+    if (!lineEmpty && line.size() + 1 + word.size() > kHelpWidth) {
+      out += line + "\n";
+      line = indent;
+      lineEmpty = true;
+    }
+    if (!lineEmpty) line += ' ';
+    line += word;
+    lineEmpty = false;
+  }
+  out += line + "\n";
+}
+
+// One line (or more, wrapped) per entry of a table: "name: description", the default marked;
+// the first beside `label`.
+template <class Entry, size_t N, class Enum>
+void addChoices(std::string& out, std::string label, const Entry (&table)[N], Enum byDefault) {
+  for (const Entry& e : table) {
+    std::string text = std::string(e.name) + ": " + e.description;
+    if (e.value == byDefault) text += " (default)";
+    addWrapped(out, label, text);
+    label.clear();
+  }
+}
+
+}  // namespace
+
+std::string usageText() {
+  const Arguments defaults;
+  std::string formats, defaultFormats, special;
+  for (const OutputFormatInfo& f : kOutputFormats) {
+    formats += std::string(formats.empty() ? "" : ",") + f.name;
+    if (f.extension != "." + std::string(f.name))
+      special += std::string(f.name) + ": BASE" + f.extension + ", " + f.description;
+  }
+  for (OutputFormat f : defaults.formats) defaultFormats += std::string(defaultFormats.empty() ? "" : ",") + nameOf(f);
+
+  std::string s =
+      "usage: acutemesh [options] INPUT\n\n"
+      "Triangulates a point set or planar straight-line graph.\n"
+      "INPUT: .poly | .node (Triangle's formats) | .json (acutemesh PSLG or rings, CG:SHOP 2025 instance)\n\n"
+      "options:\n";
+  addWrapped(s, "  -o, --output BASE", "write BASE.node, BASE.ele, ... (default: INPUT without extension + \".1\")");
+  addWrapped(s, "  --format LIST", "comma list of " + formats + " (default: " + defaultFormats + ")");
+  if (!special.empty()) addWrapped(s, "", special);
+  addChoices(s, "  --mode MODE", kModes, defaults.options.mode);
+  s += R"(  --max-angle DEG      acute mode's bound (exact at 90; 60 < DEG <= 90)
+  --min-angle DEG      smallest angle wanted (quality; also with acute / nonobtuse). Quality
+                       terminates up to 40; above, it falls back to 40 if it wanders
+  --max-area A         largest triangle area wanted (any refinement mode)
+  --max-steiner N      give up after adding N points (exit status 1; default 50 per input
+                       vertex, at least 20000)
+  --fill RULE          which regions form the domain:
+)";
+  addChoices(s, "", kFillRules, defaults.options.fill);
+  s += R"(  --convex-hull        keep every triangle of the convex hull (hole points still apply)
+  --exact-segments     put Steiner points exactly on their segments' lines where a representable
+                       point is near (integer coordinates), not within rounding of them (more
+                       points; always on for CG:SHOP input, whose verifier is exact)
+  --exact-feet         nonobtuse: Steiner points on segments may be exact altitude feet, rationals
+                       a double cannot hold (far fewer points on tilted segments). They are exact
+                       in the cgshop and json formats, rounded in the others; --stats counts
+                       them as exactPoints (default for CG:SHOP input; --no-exact-feet: off)
+  --time-limit S       give up after S seconds (exit status 1)
+  --threads N          threads for acute and nonobtuse refinement (default: one per hardware
+                       thread; 1: none besides the main one); the mesh is the same for any N
+  --stats              print one JSON object of figures on stdout
+  --no-output          compute, write nothing (for timing)
+  -h, --help           this text
+  --version            print the version
+
+exit status: 0 ok; 1 target not met; 2 bad input or usage (one-line message on stderr)
+)";
+  return s;
+}
+
+}  // namespace acutemesh::cli
