@@ -336,6 +336,69 @@ bool scaleExactly(std::vector<double>& xy, int exponent) {
 namespace {
 
 // mesh() for coordinates within range of the predicates (see below).
+// An option out of range, or empty.
+std::string checkOptions(const Options& options) {
+  if (!(options.maxAngle >= 60 && options.maxAngle <= 180))
+    return "maxAngle must be between 60 and 180 degrees";
+  if (!(options.minAngle >= 0 && options.minAngle < 60))
+    return "minAngle must be at least 0 and below 60 degrees";
+  if (!(options.maxArea >= 0) || !std::isfinite(options.maxArea))
+    return "maxArea must be a finite number >= 0";
+  return {};
+}
+
+// Times each phase into Stats::phases and reports its end to Options::progress.
+class PhaseClock {
+ public:
+  PhaseClock(const Budget& budget, const Options& options, Stats& stats)
+      : budget_(budget), options_(options), stats_(stats) {}
+  void end(const char* name) {
+    double now = budget_.elapsed();
+    stats_.phases.push_back({name, now - start_});
+    start_ = now;
+    if (options_.progress) options_.progress({name, 1.0, 0});
+  }
+
+ private:
+  const Budget& budget_;
+  const Options& options_;
+  Stats& stats_;
+  double start_ = 0;
+};
+
+// The Delaunay triangulation of the input's vertices (inputOf: T's vertex k is input vertex
+// inputOf[k]), its segments inserted unless the mode is Delaunay, and the domain's triangles
+// marked in `inside`.
+StepResult triangulateDomain(const Pslg& input, const Options& options, const Budget& budget,
+                             PhaseClock& clock, Triangulation& T, std::vector<uint32_t>& inputOf,
+                             std::vector<uint8_t>& inside, Stats& stats) {
+  const bool constrained = options.mode != Mode::Delaunay;
+  const uint32_t n = uint32_t(input.vertexCount());
+  T.trackSegments = constrained;
+  // Each vertex makes about two triangles (ghosts included); sizing up front avoids regrowth.
+  T.reserveTriangles(2 * size_t(n) + 16);
+  std::vector<uint32_t> canonical;
+  StepResult step = detail::buildDelaunay(T, input.points, canonical, inputOf, budget);
+  if (!step.ok()) return step;
+  for (uint32_t i = 0; i < n; ++i) stats.duplicates += inputOf[canonical[i]] != i;
+  if (stats.duplicates)
+    stats.warnings.push_back(std::to_string(stats.duplicates) +
+                             " duplicate vertices merged into earlier equal ones");
+  clock.end("delaunay");
+  if (constrained) {
+    step = detail::insertSegments(T, input, canonical, stats, budget);
+    if (!step.ok()) return step;
+    clock.end("segments");
+  }
+  Options domainOptions = options;
+  if (!constrained) domainOptions.fill = FillRule::Triangle;
+  const bool keepHull = !constrained || options.convexHull || input.segments.empty();
+  inside = detail::classifyDomain(T, constrained ? input : Pslg{}, domainOptions, keepHull,
+                                  stats.warnings);
+  clock.end("domain");
+  return {};
+}
+
 Result meshInRange(const Pslg& input, const Options& options) {
   Result result;
   Stats& stats = result.stats;
@@ -350,66 +413,30 @@ Result meshInRange(const Pslg& input, const Options& options) {
     return result;
   };
   std::string bad = checkInput(input);
+  if (bad.empty()) bad = checkOptions(options);
   if (!bad.empty()) return fail(Status::BadInput, bad);
-  if (!(options.maxAngle >= 60 && options.maxAngle <= 180))
-    return fail(Status::BadInput, "maxAngle must be between 60 and 180 degrees");
-  if (!(options.minAngle >= 0 && options.minAngle < 60))
-    return fail(Status::BadInput, "minAngle must be at least 0 and below 60 degrees");
-  if (!(options.maxArea >= 0) || !std::isfinite(options.maxArea))
-    return fail(Status::BadInput, "maxArea must be a finite number >= 0");
 
-  double phaseStart = 0;
-  auto endPhase = [&](const char* name) {
-    double now = budget.elapsed();
-    stats.phases.push_back({name, now - phaseStart});
-    phaseStart = now;
-    if (options.progress) options.progress({name, 1.0, 0});
-  };
-
-  bool constrained = options.mode != Mode::Delaunay;
-  Options domainOptions = options;
-  if (!constrained) domainOptions.fill = FillRule::Triangle;
-
+  PhaseClock clock(budget, options, stats);
   Triangulation T;
-  uint32_t n = uint32_t(input.vertexCount());
-  T.trackSegments = constrained;
-  // Each vertex makes about two triangles (ghosts included); sizing up front avoids regrowth.
-  T.reserveTriangles(2 * size_t(n) + 16);
-
-  std::vector<uint32_t> canonical, inputOf;
-  StepResult step = detail::buildDelaunay(T, input.points, canonical, inputOf, budget);
+  std::vector<uint32_t> inputOf;
+  std::vector<uint8_t> inside;
+  StepResult step = triangulateDomain(input, options, budget, clock, T, inputOf, inside, stats);
   if (!step.ok()) return fail(step.status, step.message);
-  for (uint32_t i = 0; i < n; ++i) stats.duplicates += inputOf[canonical[i]] != i;
-  if (stats.duplicates)
-    stats.warnings.push_back(std::to_string(stats.duplicates) +
-                             " duplicate vertices merged into earlier equal ones");
-  endPhase("delaunay");
-
-  if (constrained) {
-    step = detail::insertSegments(T, input, canonical, stats, budget);
-    if (!step.ok()) return fail(step.status, step.message);
-    endPhase("segments");
-  }
-
-  bool keepHull = !constrained || options.convexHull || input.segments.empty();
-  std::vector<uint8_t> inside = detail::classifyDomain(
-      T, constrained ? input : Pslg{}, domainOptions, keepHull, stats.warnings);
-  endPhase("domain");
 
   bool refining = options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
                   options.mode == Mode::Acute;
   Options target = options;
   if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0)
     target.minAngle = kQualityDefaultMinAngle;
-  if (refining) warnAboutInputAngles(input, target, stats);
   std::vector<uint8_t> freeVertex;
   std::vector<detail::ExactVertex> exact;
   if (refining) {
+    warnAboutInputAngles(input, target, stats);
     T.inside = std::move(inside);
     T.inside.resize(T.tri.size() / 3, 0);
     step = detail::refine(T, input, target, budget, freeVertex, exact);
     inside = std::move(T.inside);
-    endPhase("refine");
+    clock.end("refine");
     if (step.status == Status::Cancelled || step.status == Status::TargetNotMet) {
       result.status = step.status;
       result.message = step.message;
@@ -421,12 +448,12 @@ Result meshInRange(const Pslg& input, const Options& options) {
   stats.vertices = uint32_t(result.mesh.vertexCount());
   stats.triangles = uint32_t(result.mesh.triangleCount());
   stats.segments = uint32_t(result.mesh.segments.size() / 2);
-  stats.steiner = stats.vertices - n;
+  stats.steiner = stats.vertices - stats.inputVertices;
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
   double largestArea = measureAngles(T, inside, exact, stats);
   if (refining) certify(target, largestArea, exactAt, stats, result);
-  endPhase("output");
+  clock.end("output");
   stats.seconds = budget.elapsed();
   return result;
 }
