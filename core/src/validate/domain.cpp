@@ -114,8 +114,7 @@ void checkBoundaryEdges(const Check& c, const Topology& topo, const VertexMap& v
     // and one rounded outward would push an input vertex of a nearly straight hull stretch
     // off the hull (tests/data/bad/one-ulp-apart.node, nonobtuse).
     std::vector<uint8_t> usedInput(vertices.used.begin(), vertices.used.begin() + nIn);
-    std::vector<double> inputPoints(topo.m.points.begin(),
-                                    topo.m.points.begin() + 2 * size_t(nIn));
+    std::vector<double> inputPoints(topo.m.points.begin(), topo.m.points.begin() + 2 * size_t(nIn));
     hull = convexHull(inputPoints, usedInput);
     hullNext.assign(topo.n, kNone);
     for (size_t i = 0; i < hull.size(); ++i) hullNext[hull[i]] = hull[(i + 1) % hull.size()];

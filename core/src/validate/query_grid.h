@@ -78,8 +78,8 @@ class QueryGrid {
     }
   }
 
-  static bool xExtentInStrip(const double* const* pts, int count, double ya, double yb,
-                             double& xa, double& xb);
+  static bool xExtentInStrip(const double* const* pts, int count, double ya, double yb, double& xa,
+                             double& xb);
 
   std::vector<Query> q_;
   std::vector<uint32_t> start_, order_;

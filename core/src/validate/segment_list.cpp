@@ -5,43 +5,47 @@
 #include "validate/segment_walker.h"
 
 namespace acutemesh::validation {
+namespace {
 
-SegmentEdges walkSegments(const Check& c, const Topology& topo, const VertexMap& vertices) {
-  SegmentEdges edges(topo);
-  if (!c.segmentsKept()) return edges;
-  SegmentWalker walker(c, topo, vertices, edges);
-  walker.readMeshSegments();
-  walker.walkAll();
-  walker.rerouteToListedEdges();
-  walker.checkMeshSegments();
-  return edges;
-}
-
-void SegmentWalker::readMeshSegments() {
-  const std::vector<uint32_t>& list = topo_.m.segments;
+// Fills edges.listed from Mesh::segments; logs entries that are no mesh edge or repeat one.
+void readMeshSegments(const Check& c, const Topology& topo, SegmentEdges& edges) {
+  const std::vector<uint32_t>& list = topo.m.segments;
   for (size_t i = 0; i + 1 < list.size(); i += 2) {
-    uint32_t u = list[i], v = list[i + 1], h = topo_.meshEdge(u, v);
+    uint32_t u = list[i], v = list[i + 1], h = topo.meshEdge(u, v);
     if (h == kNone)
-      c_.log.add("mesh segment ", i / 2, " (", u, "-", v, ") is not a mesh edge");
-    else if (listed_[canon(h)])
-      c_.log.add("mesh segment ", i / 2, " (", u, "-", v, ") is listed twice");
+      c.log.add("mesh segment ", i / 2, " (", u, "-", v, ") is not a mesh edge");
+    else if (edges.listed[topo.canon(h)])
+      c.log.add("mesh segment ", i / 2, " (", u, "-", v, ") is listed twice");
     else
-      listed_[canon(h)] = 1;
+      edges.listed[topo.canon(h)] = 1;
   }
 }
 
 // Mesh::segments lists exactly the mesh edges that lie on input segments.
-void SegmentWalker::checkMeshSegments() {
-  const std::vector<uint32_t>& list = topo_.m.segments;
+void checkMeshSegments(const Check& c, const Topology& topo, const SegmentEdges& edges) {
+  const std::vector<uint32_t>& list = topo.m.segments;
   for (size_t i = 0; i + 1 < list.size(); i += 2) {
-    uint32_t u = list[i], v = list[i + 1], h = topo_.meshEdge(u, v);
-    if (h != kNone && !marked_[canon(h)])
-      c_.log.add("mesh segment ", i / 2, " (", u, "-", v, ") lies on no input segment");
+    uint32_t u = list[i], v = list[i + 1], h = topo.meshEdge(u, v);
+    if (h != kNone && !edges.marked[topo.canon(h)])
+      c.log.add("mesh segment ", i / 2, " (", u, "-", v, ") lies on no input segment");
   }
-  for (uint32_t h = 0; h < 3 * topo_.T; ++h)
-    if (marked_[h] && !listed_[h])
-      c_.log.add("mesh edge ", topo_.org(h), "-", topo_.dst(h),
-                 " lies on an input segment but is missing from mesh segments");
+  for (uint32_t h = 0; h < 3 * topo.T; ++h)
+    if (edges.marked[h] && !edges.listed[h])
+      c.log.add("mesh edge ", topo.org(h), "-", topo.dst(h),
+                " lies on an input segment but is missing from mesh segments");
+}
+
+}  // namespace
+
+SegmentEdges walkSegments(const Check& c, const Topology& topo, const VertexMap& vertices) {
+  SegmentEdges edges(topo);
+  if (!c.segmentsKept()) return edges;
+  readMeshSegments(c, topo, edges);
+  SegmentWalker walker(c, topo, vertices, edges);
+  walker.walkAll();
+  walker.rerouteToListedEdges();
+  checkMeshSegments(c, topo, edges);
+  return edges;
 }
 
 // Whether half-edge h (kNone: no) was left over by the first walks and no walk has taken it
@@ -59,8 +63,10 @@ bool SegmentWalker::takesUnlisted(const Chain& chain) const {
 void SegmentWalker::applyChain(const Chain& chain, uint32_t s, int w) {
   for (const auto& step : chain.steps) markWalked(step[0], step[1], w);
   for (uint32_t v : chain.vertices)
-    if (w > 0) onSegment_[v] = s;
-    else if (onSegment_[v] == s) onSegment_[v] = kNone;
+    if (w > 0)
+      onSegment_[v] = s;
+    else if (onSegment_[v] == s)
+      onSegment_[v] = kNone;
 }
 
 // How many of the edges either chain takes (each once) are wrong: listed and on no walk, or

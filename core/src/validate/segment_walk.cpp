@@ -78,7 +78,8 @@ void SegmentWalker::walkSteps(SegmentWalk& w, uint32_t cur, bool backtrack,
       // A listed edge to b ends the walk, even from a rounding past b or beside it
       // (chain-overshoots-its-end, end-an-ulp-above-the-chain).
       out.insert(out.begin() + long(exactCount++), {c, h});
-    } else if (on && key(P(c)) > key(P(cur)) && onSegment_[c] != w.s) {  // never back: overlap-back-step
+    } else if (on && key(P(c)) > key(P(cur)) && onSegment_[c] != w.s) {
+      // Never back to a vertex of this walk (overlap-back-step).
       if (key(P(c)) > key(B)) {
         if (curOn) past = c;
       } else {
@@ -91,9 +92,8 @@ void SegmentWalker::walkSteps(SegmentWalk& w, uint32_t cur, bool backtrack,
     }
   });
   // The most advanced near step first.
-  std::sort(out.begin() + long(exactCount), out.end(), [&](const WalkStep& x, const WalkStep& y) {
-    return key(P(x.to)) > key(P(y.to));
-  });
+  std::sort(out.begin() + long(exactCount), out.end(),
+            [&](const WalkStep& x, const WalkStep& y) { return key(P(x.to)) > key(P(y.to)); });
   // A near step that does not advance (roundings out of order) is for a chain that would
   // otherwise be stuck inside the mesh: where the segment leaves the mesh at cur, it leaves
   // (overlap-sideways-step: a listed edge an ulp long beside the start).
@@ -136,8 +136,8 @@ void SegmentWalker::entrySteps(SegmentWalk& w, double k, bool backtrack,
   size_t last = std::min(w.entries.size(), i + (w.leaveAnywhere ? kEntriesTried : 1));
   for (size_t j = i; j < last; ++j) {
     uint32_t next = w.entries[j];
-    bool through = backtrack ? enteringTriangle(next, w.A) != kNone
-                             : enteredThroughTriangle(next, w);
+    bool through =
+        backtrack ? enteringTriangle(next, w.A) != kNone : enteredThroughTriangle(next, w);
     if (!through) out.push_back({next, kNone});
   }
   // With b outside the mesh, a segment that left the domain may also end outside if every

@@ -27,15 +27,17 @@ namespace acutemesh::validation {
 
 class SegmentWalker {
  public:
-  SegmentWalker(const Check& c, const Topology& topo, const VertexMap& vertices,
-                SegmentEdges& out)
-      : c_(c), topo_(topo), vertices_(vertices), marked_(out.marked), listed_(out.listed),
-        segCount_(out.segCount), onSegment_(out.onSegment) {}
+  SegmentWalker(const Check& c, const Topology& topo, const VertexMap& vertices, SegmentEdges& out)
+      : c_(c),
+        topo_(topo),
+        vertices_(vertices),
+        marked_(out.marked),
+        listed_(out.listed),
+        segCount_(out.segCount),
+        onSegment_(out.onSegment) {}
 
-  void readMeshSegments();                 // fills listed_; logs edges listed wrongly
-  void walkAll();                          // walks every input segment once
-  void rerouteToListedEdges();             // retries walks that miss listed edges
-  void checkMeshSegments();                // logs listed edges on no walk, and the reverse
+  void walkAll();               // walks every input segment once (segment_walk.cpp)
+  void rerouteToListedEdges();  // retries walks that miss listed edges (segment_list.cpp)
 
  private:
   // A walk along input segment s (a->b).
@@ -116,11 +118,11 @@ class SegmentWalker {
   const Check& c_;
   const Topology& topo_;
   const VertexMap& vertices_;
-  std::vector<uint32_t>& marked_;    // SegmentEdges::marked
-  std::vector<uint8_t>& listed_;     // SegmentEdges::listed
-  std::vector<int32_t>& segCount_;   // SegmentEdges::segCount
+  std::vector<uint32_t>& marked_;     // SegmentEdges::marked
+  std::vector<uint8_t>& listed_;      // SegmentEdges::listed
+  std::vector<int32_t>& segCount_;    // SegmentEdges::segCount
   std::vector<uint32_t>& onSegment_;  // SegmentEdges::onSegment
-  std::vector<uint32_t> deadEnd_;    // per vertex: the walk (walkId_) that got stuck past it
+  std::vector<uint32_t> deadEnd_;     // per vertex: the walk (walkId_) that got stuck past it
   uint32_t walkId_ = 0;
   std::vector<WalkFrame> walkStack_;
   std::vector<WalkStep> preferred_;  // walkSteps' scratch

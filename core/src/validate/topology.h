@@ -16,13 +16,13 @@ namespace acutemesh::validation {
 // Half-edge h = 3t + k runs from corner k of triangle t to its next corner.
 struct Topology {
   const Mesh& m;
-  uint32_t n, T;                        // vertices, triangles
-  std::vector<uint8_t> good;            // per triangle: strictly counter-clockwise
-  std::vector<uint8_t> boundaryVertex;  // per vertex: an end of a boundary half-edge
-  std::vector<uint32_t> boundary;       // half-edges without a twin
-  std::vector<uint32_t> cover;    // per vertex: its triangles covering the +x direction
-  std::vector<uint32_t> twin;     // per half-edge: its twin, or kNone
-  std::vector<uint32_t> anyOut;   // per vertex: a half-edge leaving it, or kNone (unused)
+  uint32_t n, T;                           // vertices, triangles
+  std::vector<uint8_t> good;               // per triangle: strictly counter-clockwise
+  std::vector<uint8_t> boundaryVertex;     // per vertex: an end of a boundary half-edge
+  std::vector<uint32_t> boundary;          // half-edges without a twin
+  std::vector<uint32_t> cover;             // per vertex: its triangles covering the +x direction
+  std::vector<uint32_t> twin;              // per half-edge: its twin, or kNone
+  std::vector<uint32_t> anyOut;            // per vertex: a half-edge leaving it, or kNone (unused)
   std::vector<uint32_t> fanOff, fanStart;  // per vertex: its boundary half-edges (open fans)
 
   explicit Topology(const Mesh& mesh)

@@ -57,17 +57,14 @@ bool checkSizes(const Pslg& in, const Mesh& m, ErrorLog& log) {
   for (uint32_t t = 0; t < T; ++t)
     for (int k = 0; k < 3; ++k)
       if (corners(t)[k] >= n)
-        bad(Tri{t, corners(t)}, " has index ", corners(t)[k], " out of range (", n,
-            " vertices)");
+        bad(Tri{t, corners(t)}, " has index ", corners(t)[k], " out of range (", n, " vertices)");
   for (size_t s = 0; s < m.segments.size(); ++s)
     if (m.segments[s] >= n)
-      bad("mesh segment ", s / 2, " has index ", m.segments[s], " out of range (", n,
-          " vertices)");
+      bad("mesh segment ", s / 2, " has index ", m.segments[s], " out of range (", n, " vertices)");
   if (fatal) return false;
   for (uint32_t v = 0; v < nIn; ++v)
     if (!(P(v)[0] == inP(v)[0] && P(v)[1] == inP(v)[1]))
-      log.add("mesh vertex ", v, ' ', Xy{P(v)}, " differs from input vertex ", v, ' ',
-              Xy{inP(v)});
+      log.add("mesh vertex ", v, ' ', Xy{P(v)}, " differs from input vertex ", v, ' ', Xy{inP(v)});
   return true;
 }
 
@@ -132,8 +129,7 @@ void checkKinds(const Check& c, const Topology& t, const VertexMap& vertices,
       c.log.add("vertex ", v, ' ', Xy{t.P(v)}, " has kind free, but lies on input segment ",
                 onSegment[v]);
     else if (v >= c.nIn && kind == kSegmentVertex)
-      c.log.add("vertex ", v, ' ', Xy{t.P(v)},
-                " has kind segment, but lies on no input segment");
+      c.log.add("vertex ", v, ' ', Xy{t.P(v)}, " has kind segment, but lies on no input segment");
     else
       c.log.add("vertex ", v, ' ', Xy{t.P(v)}, " has kind ", names[kind], ", expected ",
                 names[want]);

@@ -94,8 +94,12 @@ bool windingIsDefined(const Check& c) {
 class FillRuleCheck {
  public:
   FillRuleCheck(const Check& c, const Topology& topo, const SegmentEdges& edges)
-      : c_(c), topo_(topo), edges_(edges), parity_(c.opt.fill == FillRule::EvenOdd),
-        comp_(topo.T, kNone), rel_(topo.T, 0) {}
+      : c_(c),
+        topo_(topo),
+        edges_(edges),
+        parity_(c.opt.fill == FillRule::EvenOdd),
+        comp_(topo.T, kNone),
+        rel_(topo.T, 0) {}
 
   void run() {
     order_.reserve(topo_.T);
@@ -113,8 +117,8 @@ class FillRuleCheck {
       for (uint32_t h = 3 * t; h < 3 * t + 3; ++h)
         if (topo_.twin[h] == kNone && keeps(w - along(h)))
           c_.log.add("boundary edge ", topo_.org(h), "->", topo_.dst(h), " of ", topo_.tri(t),
-                     ": the region beyond it has winding number ", w - along(h), ", which ",
-                     rule, " keeps, but it is not meshed");
+                     ": the region beyond it has winding number ", w - along(h), ", which ", rule,
+                     " keeps, but it is not meshed");
     }
   }
 
@@ -188,8 +192,7 @@ class FillRuleCheck {
   std::array<double, 2> centroid(uint32_t t) const {
     const uint32_t* c = topo_.corners(t);
     std::array<double, 2> g;
-    for (int k = 0; k < 2; ++k)
-      g[k] = (topo_.P(c[0])[k] + topo_.P(c[1])[k] + topo_.P(c[2])[k]) / 3;
+    for (int k = 0; k < 2; ++k) g[k] = (topo_.P(c[0])[k] + topo_.P(c[1])[k] + topo_.P(c[2])[k]) / 3;
     return g;
   }
 
