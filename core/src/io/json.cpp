@@ -1,10 +1,10 @@
-#include "io/json.h"
+#include "json.h"
 
 #include <charconv>
 #include <cstdio>
 #include <cstring>
 
-#include "io/numbers.h"
+#include "numbers.h"
 
 namespace acutemesh::io {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/parse_context.h"
+#include "parse_context.h"
 
 namespace acutemesh::io {
 

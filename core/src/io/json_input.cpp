@@ -4,8 +4,8 @@
 #include <utility>
 #include <vector>
 
-#include "io/json.h"
-#include "io/parse_context.h"
+#include "json.h"
+#include "parse_context.h"
 
 namespace acutemesh::io {
 namespace {

@@ -8,7 +8,7 @@
 // strtod otherwise (Emscripten's older libc++). For testing on any platform:
 // ACUTEMESH_NO_FLOAT_CHARCONV forces strtod; ACUTEMESH_IO_PORTABLE turns off __int128, the
 // clz builtin and the 8-digits-at-once loads.
-#include "io/numbers.h"
+#include "numbers.h"
 
 #include <cerrno>
 #include <cfloat>

@@ -1,4 +1,4 @@
-#include "io/parse_context.h"
+#include "parse_context.h"
 
 #include <cstdio>
 

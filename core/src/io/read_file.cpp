@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "acutemesh/io.h"
-#include "io/parse_context.h"
-#include "io/triangle_format.h"
+#include "parse_context.h"
+#include "triangle_format.h"
 
 namespace acutemesh {
 namespace {

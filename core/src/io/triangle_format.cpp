@@ -1,12 +1,12 @@
 // Triangle's line-oriented formats: .node (vertices) and .poly (vertices, segments, holes,
 // regional attributes). Lines are read straight from the text; a count the rest of the text
 // cannot hold is an error before anything is allocated for it.
-#include "io/triangle_format.h"
+#include "triangle_format.h"
 
 #include <cstring>
 
-#include "io/numbers.h"
-#include "io/parse_context.h"
+#include "numbers.h"
+#include "parse_context.h"
 
 namespace acutemesh::io {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "acutemesh/acutemesh.h"
-#include "validate/error_log.h"
+#include "error_log.h"
 
 namespace acutemesh::validation {
 

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <vector>
 
-#include "validate/error_log.h"
+#include "error_log.h"
 
 namespace acutemesh::validation {
 

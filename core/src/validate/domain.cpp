@@ -1,9 +1,9 @@
-#include "validate/domain.h"
+#include "domain.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "rounding.h"
+#include "../rounding.h"
 
 namespace acutemesh::validation {
 namespace {

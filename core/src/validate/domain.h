@@ -2,11 +2,11 @@
 // (The fill rules' regions are checked in winding.h.)
 #pragma once
 
-#include "validate/check.h"
-#include "validate/query_grid.h"
-#include "validate/segment_walk.h"
-#include "validate/topology.h"
-#include "validate/vertices.h"
+#include "check.h"
+#include "query_grid.h"
+#include "segment_walk.h"
+#include "topology.h"
+#include "vertices.h"
 
 namespace acutemesh::validation {
 

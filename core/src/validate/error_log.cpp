@@ -1,4 +1,4 @@
-#include "validate/error_log.h"
+#include "error_log.h"
 
 #include <cstdlib>
 

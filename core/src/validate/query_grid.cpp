@@ -1,4 +1,4 @@
-#include "validate/query_grid.h"
+#include "query_grid.h"
 
 #include <limits>
 

@@ -2,7 +2,7 @@
 // Fixtures named below are in tests/data/bad/.
 #include <algorithm>
 
-#include "validate/segment_walker.h"
+#include "segment_walker.h"
 
 namespace acutemesh::validation {
 namespace {

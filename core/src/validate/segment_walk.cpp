@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "validate/segment_walker.h"
+#include "segment_walker.h"
 
 namespace acutemesh::validation {
 

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "validate/check.h"
-#include "validate/topology.h"
-#include "validate/vertices.h"
+#include "check.h"
+#include "topology.h"
+#include "vertices.h"
 
 namespace acutemesh::validation {
 

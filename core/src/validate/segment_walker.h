@@ -16,12 +16,12 @@
 #include <memory>
 #include <vector>
 
-#include "rounding.h"
-#include "validate/check.h"
-#include "validate/query_grid.h"
-#include "validate/segment_walk.h"
-#include "validate/topology.h"
-#include "validate/vertices.h"
+#include "../rounding.h"
+#include "check.h"
+#include "query_grid.h"
+#include "segment_walk.h"
+#include "topology.h"
+#include "vertices.h"
 
 namespace acutemesh::validation {
 

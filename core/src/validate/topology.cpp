@@ -1,4 +1,4 @@
-#include "validate/topology.h"
+#include "topology.h"
 
 namespace acutemesh::validation {
 namespace {

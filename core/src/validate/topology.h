@@ -9,7 +9,7 @@
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
-#include "validate/error_log.h"
+#include "error_log.h"
 
 namespace acutemesh::validation {
 

@@ -7,16 +7,16 @@
 // give twins and stars, a hash table matches coordinates, uniform grids over the few points
 // that need locating replace all-pairs tests, and winding numbers are propagated across
 // edges, with one ray cast per connected piece of the mesh.
+#include "../build.h"
 #include "acutemesh/acutemesh.h"
-#include "build.h"
-#include "validate/check.h"
-#include "validate/domain.h"
-#include "validate/error_log.h"
-#include "validate/query_grid.h"
-#include "validate/segment_walk.h"
-#include "validate/topology.h"
-#include "validate/vertices.h"
-#include "validate/winding.h"
+#include "check.h"
+#include "domain.h"
+#include "error_log.h"
+#include "query_grid.h"
+#include "segment_walk.h"
+#include "topology.h"
+#include "vertices.h"
+#include "winding.h"
 
 namespace acutemesh {
 namespace {

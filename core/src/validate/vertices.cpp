@@ -1,8 +1,8 @@
-#include "validate/vertices.h"
+#include "vertices.h"
 
 #include <cmath>
 
-#include "validate/coord_table.h"
+#include "coord_table.h"
 
 namespace acutemesh::validation {
 namespace {

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "acutemesh/acutemesh.h"
-#include "validate/check.h"
-#include "validate/error_log.h"
-#include "validate/topology.h"
+#include "check.h"
+#include "error_log.h"
+#include "topology.h"
 
 namespace acutemesh::validation {
 

@@ -1,11 +1,11 @@
-#include "validate/winding.h"
+#include "winding.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
 
-#include "validate/coord_table.h"
+#include "coord_table.h"
 
 namespace acutemesh::validation {
 namespace {

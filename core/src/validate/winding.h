@@ -2,9 +2,9 @@
 // keeps the plane, and what lies beyond each boundary edge where it leaves it out.
 #pragma once
 
-#include "validate/check.h"
-#include "validate/segment_walk.h"
-#include "validate/topology.h"
+#include "check.h"
+#include "segment_walk.h"
+#include "topology.h"
 
 namespace acutemesh::validation {
 
