@@ -237,7 +237,7 @@ TEST(Refine, FillRuleRingsAndPointSets) {
 
 // Every CG:SHOP 2025 instance, in both modes: aCute solves 58 of 150 non-obtuse by the exact
 // check (and fails on every instance with constraints); the corner fans and the strategy
-// portfolio (refine.cpp) solve all of them.
+// portfolio (refine/strategies.cpp) solve all of them.
 void expectEveryCgshopInstanceSolved(Mode mode) {
   std::vector<std::string> files = cgshopInstances();
   ASSERT_EQ(files.size(), 150u);

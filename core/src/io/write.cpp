@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "acutemesh/io.h"
-#include "exact.h"
+#include "../exact.h"
 
 #if defined(__cpp_lib_to_chars) && !defined(ACUTEMESH_NO_FLOAT_CHARCONV)
 #define ACUTEMESH_FLOAT_TO_CHARS 1

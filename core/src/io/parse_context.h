@@ -1,0 +1,44 @@
+// What every reader shares: the text's name for messages, the first error, the warnings, and
+// how input text is quoted in them. Errors read "NAME:LINE: expected X, found Y"; things
+// tolerated go to Input::warnings in the same form.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "acutemesh/io.h"
+
+namespace acutemesh::io {
+
+// Vertex indices and item counts must fit 32 bits.
+constexpr uint64_t kMaxIndexCount = std::numeric_limits<uint32_t>::max();
+
+struct Ctx {
+  const std::string& name;
+  std::vector<std::string>* warnings;
+  std::string message;
+
+  bool fail(size_t line, const std::string& what) {
+    message = name + ":" + std::to_string(line) + ": " + what;
+    return false;
+  }
+  void warn(size_t line, const std::string& what) {
+    if (warnings) warnings->push_back(name + ":" + std::to_string(line) + ": " + what);
+  }
+};
+
+ParseResult failure(std::string message);
+
+// Input text as it may appear in a one-line message: control characters, DEL and bytes
+// above 0x7F (random bytes, or UTF-8 that a terminal may not show) become \xNN, so a message
+// never breaks its line or carries a terminal escape; shortened to `max` bytes of input.
+std::string printable(std::string_view t, size_t max = 40);
+
+// A token quoted for a message.
+std::string quote(std::string_view t);
+
+}  // namespace acutemesh::io
