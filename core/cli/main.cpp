@@ -111,12 +111,9 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-// glibc hands large freed blocks back to the kernel (blocks of 128 KB and more are mapped on
-// their own, and the heap's top is trimmed), and the next copy of a triangulation (each
-// strategy's run, each improvement round) faults the same memory in again. On the cloud VMs
-// we measure on a page fault costs about 12 microseconds: a 250-vertex CG:SHOP instance took
-// some 900 of them, about a tenth of its time. The CLI runs once and exits, so freed memory
-// stays in the process (about 750 faults, the median run of that instance 92 -> 82 ms).
+// glibc hands large freed blocks back to the kernel, and the next copy of a triangulation (each
+// strategy's run, each improvement round) faults the same memory in again, at a real cost on
+// VMs (docs/TUNING.md). The CLI runs once and exits, so freed memory stays in the process.
 namespace {
 void keepFreedMemory() {
 #ifdef __GLIBC__
