@@ -82,8 +82,8 @@ function starPolygon(rand, n, cx, cy, radius) {
 
 // Distinct points in [0, size]^2 on a grid of the given step (as the official point sets are,
 // with their collinear and cocircular runs).
-function gridPoints(rand, n, size, step, avoid = []) {
-  const seen = new Set(avoid.map((p) => `${p[0]},${p[1]}`));
+function gridPoints(rand, n, size, step) {
+  const seen = new Set();
   const pts = [];
   while (pts.length < n) {
     const p = [step * Math.floor(rand() * (size / step + 1)), step * Math.floor(rand() * (size / step + 1))];
