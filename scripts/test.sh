@@ -46,8 +46,8 @@ for f in "$skips"/*; do
 done
 if ((total)); then
   echo "skipped: $total tests need reference data (ACUTEMESH_DATA or ../shared/data):" \
-    "C++ $(count native 'C++') native, $(count sanitized 'C++') sanitized, $(count wasm 'C++') wasm;" \
-    "CLI $(count native CLI) checks, $(count sanitized CLI) under sanitizers; JavaScript $(count js JS)"
+    "C++ $(count native 'C++') native + $(count sanitized 'C++') sanitized + $(count wasm 'C++') wasm," \
+    "CLI checks $(count native CLI) + $(count sanitized CLI) sanitized, JavaScript $(count js JS)"
 else
   echo "skipped: none (reference data found)"
 fi
