@@ -10,8 +10,14 @@
 #   bash scripts/build.sh -DACUTEMESH_TESTS=OFF
 # ACUTEMESH_WASM_TARGETS (default: the module only) picks what build-wasm/ builds; test.sh
 # builds everything there. With nothing changed the whole script takes a few seconds.
+#   bash scripts/build.sh --package    only the npm package: build-wasm's module and dist/
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+package_only=0
+if [[ "${1:-}" == "--package" ]]; then
+  package_only=1
+  shift
+fi
 
 configured() { [[ -f "$1/CMakeCache.txt" && ( -f "$1/Makefile" || -f "$1/build.ninja" ) ]]; }
 gen=()
@@ -19,10 +25,12 @@ if ! command -v make >/dev/null 2>&1 && command -v ninja >/dev/null 2>&1; then
   gen=(-G Ninja)
 fi
 
-if ! configured build; then
-  cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release "$@"
+if ((!package_only)); then
+  if ! configured build; then
+    cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release "$@"
+  fi
+  cmake --build build -j"$(nproc)"
 fi
-cmake --build build -j"$(nproc)"
 
 # --- WebAssembly --------------------------------------------------------------------------
 # Debian's emcc runs its JS optimizer with node, which finds acorn only in /usr/share/nodejs.
@@ -40,6 +48,7 @@ fi
 # shellcheck disable=SC2086  # a list of target names
 cmake --build build-wasm -j"$(nproc)" --target ${ACUTEMESH_WASM_TARGETS:-wasm_acutemesh}
 node wasm/assemble.mjs build-wasm dist
+if ((package_only)); then exit 0; fi
 
 # The web page's third-party ES modules (opentype.js, topojson-client) into web/vendor/.
 node scripts/build-web.mjs

@@ -1,18 +1,46 @@
 #!/usr/bin/env bash
 # The acutemesh command line as a user meets it: exit status, messages, files written, --stats.
 # Usage: cli_test.sh PATH/TO/acutemesh   (run by ctest)
+# Checks on the reference data (Lake Superior, the official CG:SHOP instances) run when it is
+# there and are counted as skipped when it is not: the rule of tests/cpp/reference_data.h,
+# $ACUTEMESH_DATA (relative to the repository root; empty: none), else ../shared/data beside
+# the repository, else none.
 set -uo pipefail
 cli=$1
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../.." && pwd)
 data=$here/../data
-shared=$here/../../../shared/data
+cgshop=$data/cgshop  # synthetic CG:SHOP 2025 instances (tests/data/cgshop/make.mjs)
+ref=
+if [[ -n "${ACUTEMESH_DATA+set}" ]]; then
+  if [[ -n "$ACUTEMESH_DATA" ]]; then
+    ref=$ACUTEMESH_DATA
+    [[ $ref == /* ]] || ref=$root/$ref
+    if [[ ! -d $ref ]]; then
+      echo "cli: ACUTEMESH_DATA=$ACUTEMESH_DATA: no such directory"
+      exit 1
+    fi
+  fi
+elif [[ -d $root/../shared/data ]]; then
+  ref=$root/../shared/data
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
+passed=0 failed=0 skipped=0
+needs_ref=0  # 1 while the checks need the reference data: then, without it, they are skipped
+
+# Whether checks run now: always, but only with the reference data while needs_ref is 1 (for
+# the steps between checks).
+active() { ! ((needs_ref)) || [[ -n $ref ]]; }
 
 check() {  # check NAME CONDITION-COMMAND...
   local name=$1
   shift
+  if ! active; then
+    skipped=$((skipped + 1))
+    [[ -n "${ACUTEMESH_TEST_SKIPS:-}" ]] && echo "CLI $name" >>"$ACUTEMESH_TEST_SKIPS"
+    return 0
+  fi
   if "$@"; then
     passed=$((passed + 1))
   else
@@ -61,9 +89,13 @@ check "delaunay keeps the hull" stdout_has '"triangles": 48'  # 2n - 2 - 8 hull 
 check "convex hull" run 0 --convex-hull --stats --no-output "$work/A.poly"
 check "convex hull triangles" stdout_has '"triangles": 47'  # the hole is one triangle
 
-check "superior with islands" run 0 --stats --no-output "$shared/poly/superior.poly"
+check "cgshop instance" run 0 --stats --no-output "$cgshop/ortho_10_synthetic.instance.json"
+check "cgshop instance triangles" stdout_has '"triangles": 8'
+needs_ref=1
+check "superior with islands" run 0 --stats --no-output "$ref/poly/superior.poly"
 check "superior triangles" stdout_has '"triangles": 313'
-check "cgshop instance" run 0 --stats --no-output "$shared/cgshop2025/ortho_10_d2723dcc.instance.json"
+check "official cgshop instance" run 0 --stats --no-output "$ref/cgshop2025/ortho_10_d2723dcc.instance.json"
+needs_ref=0
 
 # Rings with fill rules: a square with a clockwise square hole.
 cat >"$work/rings.json" <<'EOF'
@@ -85,8 +117,12 @@ check "zero-length warning" stderr_has "segment 3 has zero length"
 check "acute A.poly" run 0 --mode acute --stats --no-output "$work/A.poly"
 check "acute certified" stdout_has '"certified": true'
 check "acute no right angle" stdout_has '"nonAcute": 0,'
-check "nonobtuse superior" run 0 --mode nonobtuse --stats --no-output "$shared/poly/superior.poly"
+check "nonobtuse plate" run 0 --mode nonobtuse --stats --no-output "$data/plate.poly"
+check "nonobtuse plate certified" stdout_has '"obtuse": 0,'
+needs_ref=1
+check "nonobtuse superior" run 0 --mode nonobtuse --stats --no-output "$ref/poly/superior.poly"
 check "nonobtuse certified" stdout_has '"obtuse": 0,'
+needs_ref=0
 check "quality 25 degrees" run 0 --mode quality --min-angle 25 --stats --no-output "$work/A.poly"
 check "quality target met" stdout_has '"targetMet": true'
 # Beyond 40 degrees refinement may wander: it falls back to 40 and says so (exit 1).
@@ -187,11 +223,11 @@ check "time limit: mesh written" test -s "$work/bigout.ele"
 check "time limit: mesh reads back" run 0 --no-output --mode delaunay "$work/bigout.node"
 
 # --- CG:SHOP 2025 solution: BASE.solution.json, only for CG:SHOP instance input --------------
-cp "$shared/cgshop2025/ortho_10_d2723dcc.instance.json" "$work/ortho.instance.json"
+cp "$cgshop/ortho_10_synthetic.instance.json" "$work/ortho.instance.json"
 check "cgshop solution" run 0 --format cgshop -o "$work/ortho" "$work/ortho.instance.json"
 check "cgshop solution written" test -s "$work/ortho.solution.json"
 check "cgshop solution uid" \
-  grep -qF '"instance_uid": "ortho_10_d2723dcc"' "$work/ortho.solution.json"
+  grep -qF '"instance_uid": "ortho_10_synthetic"' "$work/ortho.solution.json"
 check "cgshop solution content type" \
   grep -qF '"content_type": "CG_SHOP_2025_Solution"' "$work/ortho.solution.json"
 # A simple polygon of 10 vertices, nothing inside: 8 triangles, 2n - 3 = 17 edges, no Steiner.
@@ -216,43 +252,51 @@ check "cgshop on JSON rings" run 2 --format cgshop -o "$work/r" "$work/rings.jso
 check "cgshop on JSON rings writes nothing" test ! -e "$work/r.solution.json"
 
 # --- Exact altitude feet (nonobtuse, CG:SHOP input): rationals in the solution ---------------
-# A point set whose tilted hull edges have input vertices within a unit of them.
-ps="$shared/cgshop2025/point-set_250_3c338713.instance.json"
-check "exact feet" run 0 --mode nonobtuse --stats --format cgshop,ele,json -o "$work/feet" "$ps"
-check "exact feet: counted in --stats" grep -qE '"exactPoints": [1-9][0-9]*,' "$work/out"
-check "exact feet: no warning with cgshop, ele, json" test ! -s "$work/err"
-check "exact feet: certified" grep -qF '"certified": true' "$work/out"
-check "exact feet: solution verified with BigInt rationals" \
-  node "$here/verify_cgshop.mjs" "$ps" "$work/feet.solution.json" "$work/feet.ele"
-check "exact feet: in the JSON mesh" grep -qF '"exactPoints": [' "$work/feet.json"
-check "exact feet: JSON mesh reads back" run 0 --no-output "$work/feet.json"
-check "exact feet: JSON mesh reads back quietly" test ! -s "$work/err"
-# One foot's numerator off by one: the verifier must see it.
-node -e "
-  const fs = require('fs');
-  const s = JSON.parse(fs.readFileSync('$work/feet.solution.json', 'utf8'));
-  const k = s.steiner_points_x.findIndex(x => typeof x === 'string' && /^\d+\/\d+$/.test(x) && !/^\d+\/(\d*[02468])$/.test(x));
-  const [p, q] = s.steiner_points_x[k].split('/');
-  s.steiner_points_x[k] = (BigInt(p) + 1n) + '/' + q;
-  fs.writeFileSync('$work/feet.off.solution.json', JSON.stringify(s));"
-check "verifier rejects a foot off by one" \
-  bash -c "! node '$here/verify_cgshop.mjs' '$ps' '$work/feet.off.solution.json' '$work/feet.ele' 2>/dev/null"
-check "exact feet, .node: written" run 0 --mode nonobtuse -o "$work/feetnode" "$ps"
-check "exact feet, .node: says it rounds them" stderr_has "stand at exact altitude feet, rationals that node round"
-# Stopped by a budget: the triangles listed as missing the target are the obtuse ones, counted
-# at the exact feet (a foot's double is a hair from right).
-check "exact feet, budget: exit 1" run 1 --mode nonobtuse --max-steiner 200 --stats --no-output "$ps"
-check "exact feet, budget: missed = obtuse" node -e "
-  const s = JSON.parse(require('fs').readFileSync('$work/out', 'utf8'));
-  process.exit(s.exactPoints > 0 && s.obtuse > 0 && s.missedTriangles.length === s.obtuse ? 0 : 1);"
-check "exact feet off" run 0 --mode nonobtuse --stats --no-exact-feet --format cgshop,ele -o "$work/nofeet" "$ps"
-check "exact feet off: none" grep -qF '"exactPoints": 0,' "$work/out"
-check "exact feet off: verified too" \
-  node "$here/verify_cgshop.mjs" "$ps" "$work/nofeet.solution.json" "$work/nofeet.ele"
-check "exact feet: fewer points" node -e "
-  const fs = require('fs');
-  const count = f => JSON.parse(fs.readFileSync(f, 'utf8')).steiner_points_x.length;
-  process.exit(count('$work/feet.solution.json') * 2 < count('$work/nofeet.solution.json') ? 0 : 1);"
+# exact_feet_checks WHAT INSTANCE BUDGET: INSTANCE has tilted hull edges with input vertices
+# within a unit of them; BUDGET Steiner points stop its non-obtuse run short.
+exact_feet_checks() {
+  local what=$1 ps=$2 budget=$3
+  check "$what: exact feet" run 0 --mode nonobtuse --stats --format cgshop,ele,json -o "$work/$what-feet" "$ps"
+  check "$what: exact feet: counted in --stats" grep -qE '"exactPoints": [1-9][0-9]*,' "$work/out"
+  check "$what: exact feet: no warning with cgshop, ele, json" test ! -s "$work/err"
+  check "$what: exact feet: certified" grep -qF '"certified": true' "$work/out"
+  check "$what: exact feet: solution verified with BigInt rationals" \
+    node "$here/verify_cgshop.mjs" "$ps" "$work/$what-feet.solution.json" "$work/$what-feet.ele"
+  check "$what: exact feet: in the JSON mesh" grep -qF '"exactPoints": [' "$work/$what-feet.json"
+  check "$what: exact feet: JSON mesh reads back" run 0 --no-output "$work/$what-feet.json"
+  check "$what: exact feet: JSON mesh reads back quietly" test ! -s "$work/err"
+  # One foot's numerator off by one: the verifier must see it.
+  active && node -e "
+    const fs = require('fs');
+    const s = JSON.parse(fs.readFileSync('$work/$what-feet.solution.json', 'utf8'));
+    const k = s.steiner_points_x.findIndex(x => typeof x === 'string' && /^\d+\/\d+$/.test(x) && !/^\d+\/(\d*[02468])$/.test(x));
+    const [p, q] = s.steiner_points_x[k].split('/');
+    s.steiner_points_x[k] = (BigInt(p) + 1n) + '/' + q;
+    fs.writeFileSync('$work/$what-feet.off.solution.json', JSON.stringify(s));"
+  check "$what: verifier rejects a foot off by one" \
+    bash -c "! node '$here/verify_cgshop.mjs' '$ps' '$work/$what-feet.off.solution.json' '$work/$what-feet.ele' 2>/dev/null"
+  check "$what: exact feet, .node: written" run 0 --mode nonobtuse -o "$work/$what-feetnode" "$ps"
+  check "$what: exact feet, .node: says it rounds them" stderr_has "stand at exact altitude feet, rationals that node round"
+  # Stopped by a budget: the triangles listed as missing the target are the obtuse ones, counted
+  # at the exact feet (a foot's double is a hair from right).
+  check "$what: exact feet, budget: exit 1" run 1 --mode nonobtuse --max-steiner "$budget" --stats --no-output "$ps"
+  check "$what: exact feet, budget: missed = obtuse" node -e "
+    const s = JSON.parse(require('fs').readFileSync('$work/out', 'utf8'));
+    process.exit(s.exactPoints > 0 && s.obtuse > 0 && s.missedTriangles.length === s.obtuse ? 0 : 1);"
+  check "$what: exact feet off" run 0 --mode nonobtuse --stats --no-exact-feet --format cgshop,ele -o "$work/$what-nofeet" "$ps"
+  check "$what: exact feet off: none" grep -qF '"exactPoints": 0,' "$work/out"
+  check "$what: exact feet off: verified too" \
+    node "$here/verify_cgshop.mjs" "$ps" "$work/$what-nofeet.solution.json" "$work/$what-nofeet.ele"
+  check "$what: exact feet: fewer points" node -e "
+    const fs = require('fs');
+    const count = f => JSON.parse(fs.readFileSync(f, 'utf8')).steiner_points_x.length;
+    process.exit(count('$work/$what-feet.solution.json') * 2 < count('$work/$what-nofeet.solution.json') ? 0 : 1);"
+}
+exact_feet_checks synthetic "$cgshop/point-set_120_tilted.instance.json" 60
+needs_ref=1
+exact_feet_checks official "$ref/cgshop2025/point-set_250_3c338713.instance.json" 200
+needs_ref=0
+
 # The input policy on an instance the test makes: exact segments and feet by default.
 node "$here/../js/generated-instance.mjs" >"$work/generated.instance.json"
 check "policy: CG:SHOP instance meshed with exact feet" \
@@ -269,5 +313,9 @@ check "did you mean message" stderr_has "unknown mode 'non-obtuse' (delaunay, cd
 check "help lists cgshop" run 0 --help
 check "help text cgshop" stdout_has "cgshop: BASE.solution.json"
 
-echo "cli: $passed passed, $failed failed"
+echo "cli: $passed passed, $failed failed, $skipped skipped"
+if ((skipped)); then
+  echo "cli: the $skipped skipped checks need the reference data: set ACUTEMESH_DATA to its" \
+    "directory, or put it at $root/../shared/data"
+fi
 [[ $failed -eq 0 ]]

@@ -1,5 +1,6 @@
 // Helpers shared by the test suites that run mesh(): where the fixtures are, loading them,
-// and validate()'s findings as one message.
+// and validate()'s findings as one message. The reference data beside the repository:
+// reference_data.h.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -12,11 +13,14 @@
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
+#include "reference_data.h"
 
 namespace fixtures {
 
-inline const std::string kData = ACUTEMESH_TEST_DATA;      // tests/data
-inline const std::string kShared = ACUTEMESH_SHARED_DATA;  // ../shared/data
+inline const std::string kData = ACUTEMESH_TEST_DATA;  // tests/data
+// The synthetic CG:SHOP 2025 instances, of the official ones' five kinds (tests/data/cgshop).
+inline const std::string kSyntheticCgshop = kData + "/cgshop";
+inline constexpr size_t kSyntheticCgshopCount = 8;
 
 inline acutemesh::Input load(const std::string& path) {
   acutemesh::Input in;
@@ -25,10 +29,10 @@ inline acutemesh::Input load(const std::string& path) {
   return in;
 }
 
-// The 150 CG:SHOP 2025 instance files, sorted.
-inline std::vector<std::string> cgshopInstances() {
+// The CG:SHOP 2025 instance files in dir, sorted: the synthetic ones in tests/data/cgshop
+// (made by its make.mjs), or the 150 official ones, reference::file("cgshop2025").
+inline std::vector<std::string> cgshopInstances(const std::string& dir) {
   std::vector<std::string> files;
-  std::string dir = kShared + "/cgshop2025";
   if (DIR* d = opendir(dir.c_str())) {
     while (dirent* e = readdir(d)) {
       std::string name = e->d_name;

@@ -1,5 +1,6 @@
-// The CG:SHOP 2025 solution writer: exact coordinates, renumbering, and every instance in
-// ../shared/data/cgshop2025 meshed (Mode::Cdt) and read back by a small JSON reader here.
+// The CG:SHOP 2025 solution writer: exact coordinates, renumbering, and every instance (the
+// synthetic ones in tests/data/cgshop; the 150 official ones of the reference data when it is
+// there) meshed (Mode::Cdt) and read back by a small JSON reader here.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 
 #include "acutemesh/io.h"
 #include "exact.h"
+#include "reference_data.h"
 
 namespace fs = std::filesystem;
 using namespace acutemesh;
@@ -478,9 +480,8 @@ size_t checkSolution(const std::string& text, const Mesh& m, size_t n0, const st
   return steiner.size();
 }
 
-TEST(CgshopSolution, EverySharedInstanceMeshedAndReadBack) {
-  const fs::path dir = ACUTEMESH_SHARED_DATA "/cgshop2025";
-  if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " is missing";
+// Every instance file in dir meshed and its solution read back; returns the file count.
+size_t expectEveryInstanceMeshedAndReadBack(const fs::path& dir) {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir)) {
     const std::string name = e.path().filename().string();
@@ -488,41 +489,48 @@ TEST(CgshopSolution, EverySharedInstanceMeshedAndReadBack) {
       files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  ASSERT_GE(files.size(), 100u);
   size_t steinerTotal = 0;
   for (const fs::path& f : files) {
     Input in;
     const ParseResult p = readInputFile(f.string(), in);
-    ASSERT_TRUE(p.ok) << p.message;
-    ASSERT_EQ(in.format, InputFormat::CgshopInstance);
-    ASSERT_FALSE(in.instanceUid.empty());
+    EXPECT_TRUE(p.ok) << p.message;
+    EXPECT_EQ(in.format, InputFormat::CgshopInstance) << f;
+    EXPECT_FALSE(in.instanceUid.empty()) << f;
     const Result r = mesh(in.pslg);
-    ASSERT_EQ(r.status, Status::Ok) << f << ": " << r.message;
-    ASSERT_TRUE(validate(in.pslg, r.mesh).ok) << f;
+    EXPECT_EQ(r.status, Status::Ok) << f << ": " << r.message;
+    EXPECT_TRUE(validate(in.pslg, r.mesh).ok) << f;
     const size_t n0 = in.pslg.vertexCount();
     steinerTotal += checkSolution(formatCgshopSolution(r.mesh, in.instanceUid, n0), r.mesh, n0,
                                   in.instanceUid, f.filename().string());
   }
-  RecordProperty("instances", static_cast<int>(files.size()));
-  RecordProperty("steiner", static_cast<int>(steinerTotal));
+  testing::Test::RecordProperty("instances", static_cast<int>(files.size()));
+  testing::Test::RecordProperty("steiner", static_cast<int>(steinerTotal));
+  return files.size();
+}
+
+TEST(CgshopSolution, EverySharedInstanceMeshedAndReadBack) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  EXPECT_EQ(expectEveryInstanceMeshedAndReadBack(reference::file("cgshop2025")), 150u);
+}
+
+TEST(CgshopSolution, EverySyntheticInstanceMeshedAndReadBack) {
+  EXPECT_EQ(expectEveryInstanceMeshedAndReadBack(ACUTEMESH_TEST_DATA "/cgshop"), 8u);
 }
 
 // Exact altitude feet (Options::exactFeet) on instances whose boundaries are tilted, where
 // input vertices stand close to them: certified with the exact places, each on its segment
 // line and within rounding of its double, the solution written with them, and fewer Steiner
 // points than without (the double nearest a foot is not one). tests/cli/verify_cgshop.mjs
-// checks such solutions on their own (rational arithmetic in JavaScript).
-TEST(CgshopSolution, ExactFeetOnTiltedBoundaries) {
+// checks such solutions on their own (rational arithmetic in JavaScript). The instances are
+// dir/NAME.instance.json; together they must have more than minExactPoints exact points.
+void expectExactFeetPay(const fs::path& dir, const std::vector<std::string>& names,
+                        size_t minExactPoints) {
   namespace detail = acutemesh::detail;
-  const fs::path dir = ACUTEMESH_SHARED_DATA "/cgshop2025";
-  if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " is missing";
   size_t withFeet = 0, without = 0, exactPoints = 0;
-  for (const char* name : {"point-set_250_3c338713", "simple-polygon-exterior_80_d87f15e8",
-                           "simple-polygon-exterior-20_100_7ed1ca87", "simple-polygon_100_cb23308c",
-                           "ortho_40_56a6f463"}) {
+  for (const std::string& name : names) {
     SCOPED_TRACE(name);
     Input in;
-    const fs::path path = dir / (std::string(name) + ".instance.json");
+    const fs::path path = dir / (name + ".instance.json");
     ASSERT_TRUE(fs::exists(path)) << path;
     ASSERT_TRUE(readInputFile(path.string(), in).ok);
     Options o;
@@ -578,11 +586,27 @@ TEST(CgshopSolution, ExactFeetOnTiltedBoundaries) {
     const size_t n0 = in.pslg.vertexCount();
     checkSolution(formatCgshopSolution(m, in.instanceUid, n0), m, n0, in.instanceUid, name);
   }
-  EXPECT_GT(exactPoints, 50u);
+  EXPECT_GT(exactPoints, minExactPoints);
   EXPECT_LT(withFeet * 10, without * 7) << withFeet << " Steiner points with exact feet, " << without
                                         << " without";
-  RecordProperty("steiner_exact_feet", static_cast<int>(withFeet));
-  RecordProperty("steiner_without", static_cast<int>(without));
+  testing::Test::RecordProperty("steiner_exact_feet", static_cast<int>(withFeet));
+  testing::Test::RecordProperty("steiner_without", static_cast<int>(without));
+}
+
+TEST(CgshopSolution, ExactFeetOnTiltedBoundaries) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  expectExactFeetPay(reference::file("cgshop2025"),
+                     {"point-set_250_3c338713", "simple-polygon-exterior_80_d87f15e8",
+                      "simple-polygon-exterior-20_100_7ed1ca87", "simple-polygon_100_cb23308c",
+                      "ortho_40_56a6f463"},
+                     50);
+}
+
+// The synthetic point set's bottom and top hull edges are tilted, with rows of points a unit
+// or so inside them.
+TEST(CgshopSolution, ExactFeetOnSyntheticTiltedBoundaries) {
+  expectExactFeetPay(ACUTEMESH_TEST_DATA "/cgshop",
+                     {"point-set_120_tilted", "simple-polygon-exterior_50_synthetic"}, 40);
 }
 
 // Crossing constraints make rounded crossing points: fractional Steiner coordinates.

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "acutemesh/io.h"
+#include "reference_data.h"
 
 namespace fs = std::filesystem;
 using namespace acutemesh;
@@ -57,7 +58,6 @@ void operator delete[](void* p, size_t) noexcept { std::free(p); }
 namespace {
 
 const std::string kData = ACUTEMESH_TEST_DATA "/io/";
-const std::string kShared = ACUTEMESH_SHARED_DATA "/";
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
@@ -77,11 +77,11 @@ bool startsWith(const std::string& s, const std::string& prefix) {
 }
 
 // ------------------------------------------------------------------------------------------
-// Reference data
+// Whole inputs: Triangle's letter A, Lake Superior, CG:SHOP 2025 instances
 
-TEST(IoRead, SharedLetterA) {
+TEST(IoRead, LetterA) {
   Input in;
-  ParseResult r = readInputFile(kShared + "poly/A.poly", in);
+  ParseResult r = readInputFile(ACUTEMESH_TEST_DATA "/A.poly", in);
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_EQ(in.format, InputFormat::Poly);
   EXPECT_EQ(in.pslg.vertexCount(), 29u);
@@ -97,9 +97,10 @@ TEST(IoRead, SharedLetterA) {
   EXPECT_TRUE(in.warnings.empty());
 }
 
-TEST(IoRead, SharedSuperior) {
+TEST(IoRead, Superior) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
   Input in;
-  ParseResult r = readInputFile(kShared + "poly/superior.poly", in);
+  ParseResult r = readInputFile(reference::file("poly/superior.poly"), in);
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_EQ(in.pslg.vertexCount(), 303u);
   EXPECT_EQ(in.pslg.segmentCount(), 303u);
@@ -135,8 +136,8 @@ long numberAfter(const std::string& text, const std::string& key) {
   return std::strtol(text.c_str() + k + 1, nullptr, 10);
 }
 
-TEST(IoRead, AllCgshopInstances) {
-  const fs::path dir = kShared + "cgshop2025";
+// The CG:SHOP instance files in dir, sorted.
+std::vector<fs::path> instanceFiles(const fs::path& dir) {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir)) {
     const std::string name = e.path().filename().string();
@@ -144,7 +145,11 @@ TEST(IoRead, AllCgshopInstances) {
       files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  ASSERT_EQ(files.size(), 150u);
+  return files;
+}
+
+// Each file read as its text says: the points, the boundary ring, then the constraints.
+void expectInstancesRead(const std::vector<fs::path>& files) {
   size_t withConstraints = 0;
   for (const fs::path& f : files) {
     SCOPED_TRACE(f.string());
@@ -173,6 +178,19 @@ TEST(IoRead, AllCgshopInstances) {
     EXPECT_TRUE(in.pslg.holes.empty());
   }
   EXPECT_GT(withConstraints, 0u);
+}
+
+TEST(IoRead, AllCgshopInstances) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  const std::vector<fs::path> files = instanceFiles(reference::file("cgshop2025"));
+  ASSERT_EQ(files.size(), 150u);
+  expectInstancesRead(files);
+}
+
+TEST(IoRead, SyntheticCgshopInstances) {
+  const std::vector<fs::path> files = instanceFiles(ACUTEMESH_TEST_DATA "/cgshop");
+  ASSERT_EQ(files.size(), 8u);
+  expectInstancesRead(files);
 }
 
 TEST(IoRead, CgshopExampleFromReadme) {

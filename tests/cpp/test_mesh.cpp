@@ -17,7 +17,6 @@ namespace {
 
 using fixtures::cgshopInstances;
 using fixtures::kData;
-using fixtures::kShared;
 using fixtures::load;
 
 double meshArea(const Mesh& m) {
@@ -90,25 +89,34 @@ void expectValid(const Pslg& in, const Options& options, const Result& r, const 
   EXPECT_EQ(fixtures::validationErrors(in, options, r.mesh), "") << what;
 }
 
+// The CDT of a .poly of simple loops, also transformed: valid, covering the loops' area.
+void expectPolyAndTransformsMeshed(const std::string& path) {
+  Input in = load(path);
+  Options options;
+  Result base = mesh(in.pslg, options);
+  expectValid(in.pslg, options, base, path);
+  double expected = loopsArea(in.pslg);
+  EXPECT_NEAR(meshArea(base.mesh), expected, 1e-12 * expected) << path;
+  EXPECT_EQ(base.stats.steiner, 0u);
+  for (int kind = 0; kind < 7; ++kind) {
+    Pslg moved = transformed(in.pslg, kind);
+    Result r = mesh(moved, options);
+    std::string what = path + " " + kTransformNames[kind];
+    expectValid(moved, options, r, what);
+    if (kind < 6) EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount()) << what;
+  }
+}
+
 }  // namespace
 
 TEST(Mesh, PolyFixturesAndTheirTransforms) {
-  for (const std::string& path : {kData + "/A.poly", kShared + "/poly/superior.poly"}) {
-    Input in = load(path);
-    Options options;
-    Result base = mesh(in.pslg, options);
-    expectValid(in.pslg, options, base, path);
-    double expected = loopsArea(in.pslg);
-    EXPECT_NEAR(meshArea(base.mesh), expected, 1e-12 * expected) << path;
-    EXPECT_EQ(base.stats.steiner, 0u);
-    for (int kind = 0; kind < 7; ++kind) {
-      Pslg moved = transformed(in.pslg, kind);
-      Result r = mesh(moved, options);
-      std::string what = path + " " + kTransformNames[kind];
-      expectValid(moved, options, r, what);
-      if (kind < 6) EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount()) << what;
-    }
-  }
+  for (const char* name : {"A.poly", "plate.poly", "naca0012.poly"})
+    expectPolyAndTransformsMeshed(kData + "/" + name);
+}
+
+TEST(Mesh, SuperiorAndItsTransforms) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  expectPolyAndTransformsMeshed(reference::file("poly/superior.poly"));
 }
 
 TEST(Mesh, PolyHoleCountsAndSegments) {
@@ -124,9 +132,10 @@ TEST(Mesh, PolyHoleCountsAndSegments) {
   EXPECT_GT(withHull.mesh.triangleCount(), r.mesh.triangleCount());
 }
 
-TEST(Mesh, AllCgshopInstances) {
-  std::vector<std::string> files = cgshopInstances();
-  ASSERT_EQ(files.size(), 150u);
+namespace {
+
+// Each instance's CDT, also turned, mirrored and moved: valid, covering the region boundary.
+void expectInstancesMeshed(const std::vector<std::string>& files) {
   for (const std::string& path : files) {
     Input in = load(path);
     Options options;
@@ -147,6 +156,21 @@ TEST(Mesh, AllCgshopInstances) {
       expectValid(moved, options, mesh(moved, options), path + " " + kTransformNames[kind]);
     }
   }
+}
+
+}  // namespace
+
+TEST(Mesh, AllCgshopInstances) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  std::vector<std::string> files = cgshopInstances(reference::file("cgshop2025"));
+  ASSERT_EQ(files.size(), 150u);
+  expectInstancesMeshed(files);
+}
+
+TEST(Mesh, SyntheticCgshopInstances) {
+  std::vector<std::string> files = cgshopInstances(fixtures::kSyntheticCgshop);
+  ASSERT_EQ(files.size(), fixtures::kSyntheticCgshopCount);
+  expectInstancesMeshed(files);
 }
 
 TEST(Mesh, DelaunayOfRandomPointsAndTransforms) {

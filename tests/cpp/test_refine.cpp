@@ -19,7 +19,7 @@ namespace {
 
 using fixtures::cgshopInstances;
 using fixtures::kData;
-using fixtures::kShared;
+using fixtures::kSyntheticCgshop;
 
 acutemesh::Pslg load(const std::string& path) { return fixtures::load(path).pslg; }
 
@@ -54,35 +54,37 @@ Pslg rotated90(const Pslg& in, bool mirror) {
 
 }  // namespace
 
-TEST(Refine, AcuteAndNonObtuseOnPolyFixtures) {
-  // Steiner counts are regression guards (aCute -pq20U90: 86 on A, 440 on Superior with one
-  // obtuse triangle left); lower is better.
-  struct Case {
-    std::string path;
-    size_t acuteSteinerAtMost;
-  };
-  for (const Case& c : {Case{kData + "/A.poly", 200}, Case{kShared + "/poly/superior.poly", 900}}) {
-    Pslg base = load(c.path);
-    for (int variant = 0; variant < 3; ++variant) {
-      Pslg in = variant == 0 ? base : rotated90(base, variant == 2);
-      std::string what = c.path + (variant == 0 ? "" : variant == 1 ? " rot90" : " mirror");
-      for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
-        Options o;
-        o.mode = mode;
-        Result r = mesh(in, o);
-        ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
-        expectValid(in, o, r, what);
-        size_t nonAcute, obtuse;
-        countCorners(r.mesh, &nonAcute, &obtuse);
-        if (mode == Mode::Acute) {
-          EXPECT_EQ(nonAcute, 0u) << what;
-          EXPECT_LE(r.stats.steiner, c.acuteSteinerAtMost) << what;
-        }
-        EXPECT_EQ(obtuse, 0u) << what;
-        EXPECT_TRUE(r.stats.certified && r.stats.targetMet) << what;
+// Certified acute and non-obtuse meshes of the input at path, also turned and mirrored.
+// Steiner counts are regression guards (aCute -pq20U90: 86 on A, 440 on Superior with one
+// obtuse triangle left); lower is better.
+void expectAcuteAndNonObtuse(const std::string& path, size_t acuteSteinerAtMost) {
+  Pslg base = load(path);
+  for (int variant = 0; variant < 3; ++variant) {
+    Pslg in = variant == 0 ? base : rotated90(base, variant == 2);
+    std::string what = path + (variant == 0 ? "" : variant == 1 ? " rot90" : " mirror");
+    for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
+      Options o;
+      o.mode = mode;
+      Result r = mesh(in, o);
+      ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+      expectValid(in, o, r, what);
+      size_t nonAcute, obtuse;
+      countCorners(r.mesh, &nonAcute, &obtuse);
+      if (mode == Mode::Acute) {
+        EXPECT_EQ(nonAcute, 0u) << what;
+        EXPECT_LE(r.stats.steiner, acuteSteinerAtMost) << what;
       }
+      EXPECT_EQ(obtuse, 0u) << what;
+      EXPECT_TRUE(r.stats.certified && r.stats.targetMet) << what;
     }
   }
+}
+
+TEST(Refine, AcuteAndNonObtuseOnPolyFixtures) { expectAcuteAndNonObtuse(kData + "/A.poly", 200); }
+
+TEST(Refine, AcuteAndNonObtuseOnSuperior) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  expectAcuteAndNonObtuse(reference::file("poly/superior.poly"), 900);
 }
 
 // The smallest angle of any triangle of m, in degrees (floating point, from the cosines).
@@ -171,7 +173,7 @@ TEST(Refine, MinAngleBeyondFortyIsBestEffortAndStable) {
 }
 
 TEST(Refine, BudgetsAndCancelReturnAValidBestMesh) {
-  Pslg in = load(kShared + "/poly/superior.poly");
+  Pslg in = load(kData + "/naca0012.poly");
   Options o;
   o.mode = Mode::Acute;
   o.maxSteiner = 20;
@@ -238,9 +240,7 @@ TEST(Refine, FillRuleRingsAndPointSets) {
 // Every CG:SHOP 2025 instance, in both modes: aCute solves 58 of 150 non-obtuse by the exact
 // check (and fails on every instance with constraints); the corner fans and the strategy
 // portfolio (refine/strategies.cpp) solve all of them.
-void expectEveryCgshopInstanceSolved(Mode mode) {
-  std::vector<std::string> files = cgshopInstances();
-  ASSERT_EQ(files.size(), 150u);
+void expectEveryCgshopInstanceSolved(Mode mode, const std::vector<std::string>& files) {
   size_t solved = 0;
   for (const std::string& path : files) {
     Pslg in = load(path);
@@ -270,11 +270,28 @@ void expectEveryCgshopInstanceSolved(Mode mode) {
     EXPECT_EQ(missed, 0u) << path << ": " << r.message;
     solved += missed == 0;
   }
-  EXPECT_EQ(solved, 150u);
+  EXPECT_EQ(solved, files.size());
 }
 
-TEST(Refine, EveryCgshopInstanceNonObtuse) { expectEveryCgshopInstanceSolved(Mode::NonObtuse); }
-TEST(Refine, EveryCgshopInstanceAcute) { expectEveryCgshopInstanceSolved(Mode::Acute); }
+TEST(Refine, EveryCgshopInstanceNonObtuse) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  const std::vector<std::string> files = cgshopInstances(reference::file("cgshop2025"));
+  ASSERT_EQ(files.size(), 150u);
+  expectEveryCgshopInstanceSolved(Mode::NonObtuse, files);
+}
+
+TEST(Refine, EveryCgshopInstanceAcute) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  const std::vector<std::string> files = cgshopInstances(reference::file("cgshop2025"));
+  ASSERT_EQ(files.size(), 150u);
+  expectEveryCgshopInstanceSolved(Mode::Acute, files);
+}
+
+TEST(Refine, EverySyntheticCgshopInstanceBothModes) {
+  const std::vector<std::string> files = cgshopInstances(kSyntheticCgshop);
+  ASSERT_EQ(files.size(), fixtures::kSyntheticCgshopCount);
+  for (Mode mode : {Mode::NonObtuse, Mode::Acute}) expectEveryCgshopInstanceSolved(mode, files);
+}
 
 // Wide fans at small corners (Strategy::wideFans): simple-polygon-exterior_10_74050e4d has a
 // 0.18-degree wedge 7,300 units long between a constraint and the boundary, next to a 6-degree
@@ -282,7 +299,8 @@ TEST(Refine, EveryCgshopInstanceAcute) { expectEveryCgshopInstanceSolved(Mode::A
 // 1,862 along the wedge, before the rounds in halves); with the tiny corner's fan taking most of
 // the room between the two, 1,441 (turned a quarter, where rounding differs: 1,840 and 1,624).
 TEST(Refine, WideFansAtTinyCorners) {
-  Pslg in = load(std::string(kShared) + "/cgshop2025/simple-polygon-exterior_10_74050e4d.instance.json");
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  Pslg in = load(reference::file("cgshop2025/simple-polygon-exterior_10_74050e4d.instance.json"));
   for (bool turned : {false, true}) {
     Pslg input = in;
     if (turned)
@@ -340,19 +358,24 @@ TEST(Refine, AreaBoundGetsTheBudgetItNeeds) {
   expectValid(square, o, r, "area bound");
 }
 
-TEST(Refine, MaxAngleBelowNinetyIsBestEffortAndStable) {
-  Pslg in = load(kShared + "/poly/superior.poly");
+// Acute meshes with a smaller maximum angle: reachable above the input's bound of
+// 90 - (smallest input angle) / 2, certified; below it, said so, and the result still ends acute.
+void expectMaxAngleBelowNinety(const std::string& path, double smallestInputAngle, double reachable,
+                               double unreachable) {
+  Pslg in = load(path);
+  ASSERT_GT(reachable, 90 - smallestInputAngle / 2);
+  ASSERT_LT(unreachable, 90 - smallestInputAngle / 2);
   Options o;
   o.mode = Mode::Acute;
-  o.maxAngle = 85;  // above the input's bound of 90 - 12.2 / 2 = 83.9: reachable
+  o.maxAngle = reachable;
   Result r = mesh(in, o);
   ASSERT_EQ(r.status, Status::Ok) << r.message;
-  EXPECT_LT(r.stats.maxAngle, 85);
+  EXPECT_LT(r.stats.maxAngle, o.maxAngle);
   EXPECT_TRUE(r.stats.certified);
-  EXPECT_NEAR(r.stats.smallestInputAngle, 12.2, 0.01);
-  expectValid(in, o, r, "superior 85");
+  EXPECT_NEAR(r.stats.smallestInputAngle, smallestInputAngle, 0.01);
+  expectValid(in, o, r, path + " reachable");
 
-  o.maxAngle = 80;  // below the bound: said so, and the result still ends acute
+  o.maxAngle = unreachable;
   r = mesh(in, o);
   EXPECT_EQ(r.status, Status::TargetNotMet);
   ASSERT_FALSE(r.stats.warnings.empty());
@@ -360,7 +383,18 @@ TEST(Refine, MaxAngleBelowNinetyIsBestEffortAndStable) {
   size_t nonAcute, obtuse;
   countCorners(r.mesh, &nonAcute, &obtuse);
   EXPECT_EQ(nonAcute, 0u);
-  expectValid(in, o, r, "superior 80");
+  expectValid(in, o, r, path + " below the bound");
+}
+
+// The airfoil's trailing edge has 16.5 degrees: a bound of 81.8.
+TEST(Refine, MaxAngleBelowNinetyIsBestEffortAndStable) {
+  expectMaxAngleBelowNinety(kData + "/naca0012.poly", 16.49, 85, 80);
+}
+
+// Superior's smallest input angle is 12.2 degrees: a bound of 83.9.
+TEST(Refine, MaxAngleBelowNinetyOnSuperior) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  expectMaxAngleBelowNinety(reference::file("poly/superior.poly"), 12.2, 85, 80);
 }
 
 // The benchmark's generated shapes (copies of bench/inputs/data: a plate with holes, an
@@ -387,31 +421,20 @@ TEST(Refine, PlateAirfoilAndGlyphs) {
   }
 }
 
+namespace {
+
+struct ThreadCase {
+  std::string path;
+  Mode mode;
+  double maxAngle;
+  uint32_t maxSteiner;
+};
+
 // Acute and non-obtuse refinement runs its strategies on threads where it can (the later ones
 // start before the earlier ones are done, and get their caps while they run): the mesh must
 // be the one the strategies make one after another, bit for bit, for any thread count.
-TEST(Refine, ThreadsMakeTheSameMesh) {
-  struct Case {
-    std::string path;
-    Mode mode;
-    double maxAngle;
-    uint32_t maxSteiner;
-  };
-  const std::string cgshop = std::string(kShared) + "/cgshop2025/";
-  const std::vector<Case> cases = {
-      {std::string(kShared) + "/poly/A.poly", Mode::Acute, 90, 0},
-      {std::string(kShared) + "/poly/superior.poly", Mode::NonObtuse, 90, 0},
-      {std::string(kShared) + "/poly/superior.poly", Mode::Acute, 85, 0},
-      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::NonObtuse, 90, 0},
-      // Improvement rounds in halves (1,605 Steiner points before them).
-      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::Acute, 90, 0},
-      {cgshop + "point-set_150_1fb326cf.instance.json", Mode::NonObtuse, 90, 0},
-      // A Steiner budget that stops every strategy short.
-      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::Acute, 90, 300},
-      // Wide fans fall short; the usual fans, run after all the strategies with wide ones, do not.
-      {cgshop + "simple-polygon-exterior-20_40_317d3f6d.instance.json", Mode::Acute, 90, 0},
-  };
-  for (const Case& c : cases) {
+void expectTheSameMeshOnAnyThreads(const std::vector<ThreadCase>& cases) {
+  for (const ThreadCase& c : cases) {
     Pslg in = load(c.path);
     Options o;
     o.mode = c.mode;
@@ -432,11 +455,43 @@ TEST(Refine, ThreadsMakeTheSameMesh) {
   }
 }
 
+}  // namespace
+
+TEST(Refine, ThreadsMakeTheSameMesh) {
+  const std::string cgshop = kSyntheticCgshop + "/";
+  expectTheSameMeshOnAnyThreads({
+      {kData + "/A.poly", Mode::Acute, 90, 0},
+      {kData + "/naca0012.poly", Mode::Acute, 85, 0},
+      {cgshop + "simple-polygon-exterior_150_synthetic.instance.json", Mode::NonObtuse, 90, 0},
+      {cgshop + "simple-polygon-exterior_150_synthetic.instance.json", Mode::Acute, 90, 0},
+      {cgshop + "point-set_60_synthetic.instance.json", Mode::NonObtuse, 90, 0},
+      // A Steiner budget that stops every strategy short.
+      {cgshop + "simple-polygon-exterior_150_synthetic.instance.json", Mode::Acute, 90, 300},
+  });
+}
+
+TEST(Refine, ThreadsMakeTheSameMeshOnReferenceData) {
+  ACUTEMESH_NEED_REFERENCE_DATA();
+  const std::string cgshop = reference::file("cgshop2025/");
+  expectTheSameMeshOnAnyThreads({
+      {reference::file("poly/superior.poly"), Mode::NonObtuse, 90, 0},
+      {reference::file("poly/superior.poly"), Mode::Acute, 85, 0},
+      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::NonObtuse, 90, 0},
+      // Improvement rounds in halves (1,605 Steiner points before them).
+      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::Acute, 90, 0},
+      {cgshop + "point-set_150_1fb326cf.instance.json", Mode::NonObtuse, 90, 0},
+      // A Steiner budget that stops every strategy short.
+      {cgshop + "simple-polygon-exterior_250_c0a19392.instance.json", Mode::Acute, 90, 300},
+      // Wide fans fall short; the usual fans, run after all the strategies with wide ones, do not.
+      {cgshop + "simple-polygon-exterior-20_40_317d3f6d.instance.json", Mode::Acute, 90, 0},
+  });
+}
+
 #ifndef __EMSCRIPTEN__
 // Cancelled from another thread while the strategies run on theirs: every thread stops, and
 // the best mesh so far comes back valid.
 TEST(Refine, CancelWhileStrategiesRunOnThreads) {
-  Pslg in = load(std::string(kShared) + "/cgshop2025/simple-polygon-exterior_250_c0a19392.instance.json");
+  Pslg in = load(kSyntheticCgshop + "/simple-polygon-exterior_150_synthetic.instance.json");
   Options o;
   o.mode = Mode::Acute;
   o.exactSegments = true;
@@ -444,7 +499,7 @@ TEST(Refine, CancelWhileStrategiesRunOnThreads) {
   std::atomic<bool> cancel{false};
   o.cancel = &cancel;
   std::thread canceller([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(15));  // the whole run takes ~0.2 s
+    std::this_thread::sleep_for(std::chrono::milliseconds(15));  // the whole run takes ~0.3 s
     cancel = true;
   });
   Result r = mesh(in, o);

@@ -6,7 +6,9 @@ import assert from 'node:assert/strict';
 
 import init, { AcuteMeshError, createInstance } from 'acutemesh';
 import initSingle from 'acutemesh/single';
-import { fixtures, load, label } from './helpers.mjs';
+import {
+  fixtures, load, label, reference, needsReference, referenceFile, referencePolys, instanceFiles, syntheticCgshop,
+} from './helpers.mjs';
 
 const am = await init();
 
@@ -53,36 +55,43 @@ function checkValid(pslg, m) {
   assert.deepEqual(v, { ok: true, errors: [] });
 }
 
-for (const path of fixtures()) {
-  test(`every mode on ${label(path)}`, () => {
-    const pslg = load(am, path);
-    for (const mode of ['delaunay', 'cdt', 'quality', 'nonobtuse', 'acute']) {
-      const m = am.mesh(pslg, { mode });
-      checkShape(pslg, m);
-      checkValid(pslg, m);
-      assert.equal(m.options.mode, mode);
-      if (mode === 'delaunay' || mode === 'cdt') {
-        assert.equal(m.status, 'ok');
-        continue;
-      }
-      assert.equal(m.status, m.stats.targetMet ? 'ok' : 'target-not-met');
-      if (mode === 'quality') {
-        // Triangle's default bound of 20 degrees, where the input's own angles allow it (a
-        // point set's hull corners are not counted in smallestInputAngle).
-        if (m.stats.smallestInputAngle >= 40 && pslg.segments.length > 0) {
-          assert.ok(m.stats.targetMet, m.message);
-          assert.ok(m.stats.minAngle >= 20 - 1e-9, `min angle ${m.stats.minAngle}`);
-        }
-        continue;
-      }
-      // Acute and non-obtuse: certified on every fixture, and the float angles agree.
-      assert.ok(m.stats.certified, `${mode}: ${m.message}`);
-      assert.equal(m.stats.obtuse, 0);
-      if (mode === 'acute') assert.equal(m.stats.nonAcute, 0);
-      for (let t = 0; t < m.triangles.length / 3; ++t)
-        for (const c of cornerCosines(m, t)) assert.ok(c > -1e-9, `${mode}: triangle ${t} has an obtuse corner`);
+// Every mode on one input, each result checked.
+function everyMode(path) {
+  const pslg = load(am, path);
+  for (const mode of ['delaunay', 'cdt', 'quality', 'nonobtuse', 'acute']) {
+    const m = am.mesh(pslg, { mode });
+    checkShape(pslg, m);
+    checkValid(pslg, m);
+    assert.equal(m.options.mode, mode);
+    if (mode === 'delaunay' || mode === 'cdt') {
+      assert.equal(m.status, 'ok');
+      continue;
     }
-  });
+    assert.equal(m.status, m.stats.targetMet ? 'ok' : 'target-not-met');
+    if (mode === 'quality') {
+      // Triangle's default bound of 20 degrees, where the input's own angles allow it (a
+      // point set's hull corners are not counted in smallestInputAngle).
+      if (m.stats.smallestInputAngle >= 40 && pslg.segments.length > 0) {
+        assert.ok(m.stats.targetMet, m.message);
+        assert.ok(m.stats.minAngle >= 20 - 1e-9, `min angle ${m.stats.minAngle}`);
+      }
+      continue;
+    }
+    // Acute and non-obtuse: certified on every fixture, and the float angles agree.
+    assert.ok(m.stats.certified, `${mode}: ${m.message}`);
+    assert.equal(m.stats.obtuse, 0);
+    if (mode === 'acute') assert.equal(m.stats.nonAcute, 0);
+    for (let t = 0; t < m.triangles.length / 3; ++t)
+      for (const c of cornerCosines(m, t)) assert.ok(c > -1e-9, `${mode}: triangle ${t} has an obtuse corner`);
+  }
+}
+
+for (const path of fixtures()) test(`every mode on ${label(path)}`, () => everyMode(path));
+if (reference.dir || reference.error) {
+  for (const path of referencePolys()) test(`every mode on ${label(path)}`, () => everyMode(path));
+} else {
+  const title = 'every mode on the reference .poly inputs';
+  test(title, needsReference(title), () => {});
 }
 
 // Whether (x, y) lies exactly on one of pslg's segments: cross products in BigInt, of the
@@ -102,15 +111,11 @@ function onSomeSegmentExactly(pslg, x, y) {
   return false;
 }
 
-test('a few CG:SHOP 2025 instances: parsed, constrained, non-obtuse or honestly not', async () => {
-  const { readdirSync } = await import('node:fs');
-  const { join } = await import('node:path');
-  const { sharedData } = await import('./helpers.mjs');
-  const dir = join(sharedData, 'cgshop2025');
-  const files = readdirSync(dir).filter((f) => f.endsWith('.instance.json')).sort();
-  assert.equal(files.length, 150);
-  for (const f of files.filter((_, i) => i % 15 === 0)) {
-    const inst = load(am, join(dir, f));
+// Instance files meshed non-obtuse with exact segments: on their segments exactly, and written
+// as CG:SHOP solutions.
+function meshInstances(files) {
+  for (const f of files) {
+    const inst = load(am, f);
     assert.equal(typeof inst.instanceUid, 'string');
     // The input policy (as the CLI's): exact segments and exact feet for an instance.
     const m = am.mesh(inst, { mode: 'nonobtuse', timeLimit: 10 });
@@ -127,13 +132,25 @@ test('a few CG:SHOP 2025 instances: parsed, constrained, non-obtuse or honestly 
     assert.equal(solution.instance_uid, inst.instanceUid);
     assert.equal(solution.steiner_points_x.length, m.stats.steiner);
   }
+}
+
+test('the synthetic CG:SHOP 2025 instances: parsed, constrained, non-obtuse or honestly not', () => {
+  const files = instanceFiles(syntheticCgshop);
+  assert.equal(files.length, 8);
+  meshInstances(files);
 });
 
-test('exact feet: rationals in the mesh and the CG:SHOP solution, non-obtuse exactly', async () => {
-  const { join } = await import('node:path');
-  const { sharedData } = await import('./helpers.mjs');
-  // Tilted hull edges with input vertices within a unit of them.
-  const inst = load(am, join(sharedData, 'cgshop2025', 'point-set_250_3c338713.instance.json'));
+const official = 'a few official CG:SHOP 2025 instances: parsed, constrained, non-obtuse or honestly not';
+test(official, needsReference(official), () => {
+  const files = instanceFiles(referenceFile('cgshop2025'));
+  assert.equal(files.length, 150);
+  meshInstances(files.filter((_, i) => i % 15 === 0));
+});
+
+// Exact feet on an instance with tilted hull edges and input vertices within a unit of them:
+// rationals in the mesh and the CG:SHOP solution, non-obtuse exactly.
+function exactFeet(path) {
+  const inst = load(am, path);
   // Exact feet are the input policy's default for an instance; exactFeet: false turns them off.
   const plain = am.mesh(inst, { mode: 'nonobtuse', exactFeet: false });
   const m = am.mesh(inst, { mode: 'nonobtuse' });
@@ -183,6 +200,15 @@ test('exact feet: rationals in the mesh and the CG:SHOP solution, non-obtuse exa
     assert.equal(solution.steiner_points_y[p.vertex - n0], expect(p.y));
   }
   assert.deepEqual(JSON.parse(am.toJSON(m)).exactPoints, m.exactPoints.map((p) => [p.vertex, p.x, p.y]));
+}
+
+test('exact feet on the synthetic tilted point set', () => {
+  exactFeet(`${syntheticCgshop}/point-set_120_tilted.instance.json`);
+});
+
+const officialFeet = 'exact feet on an official tilted point set';
+test(officialFeet, needsReference(officialFeet), () => {
+  exactFeet(referenceFile('cgshop2025', 'point-set_250_3c338713.instance.json'));
 });
 
 test('parameters reach the core: maxArea, minAngle, maxAngle, convexHull, fill', () => {

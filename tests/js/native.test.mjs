@@ -10,15 +10,15 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 
 import init from 'acutemesh';
-import { fixtures, load, label, root } from './helpers.mjs';
+import { fixtures, load, label, root, needsReference, referencePolys } from './helpers.mjs';
 
 const cli = join(root, 'build', 'acutemesh');
 const am = await init();
 
-test('wasm and native meshes are identical', (t) => {
+function expectSameMeshes(t, paths) {
   const dir = mkdtempSync(join(tmpdir(), 'acutemesh-native-'));
   t.after(() => rmSync(dir, { recursive: true, force: true }));
-  for (const path of fixtures()) {
+  for (const path of paths) {
     const pslg = load(am, path);
     for (const mode of ['delaunay', 'cdt', 'quality', 'nonobtuse', 'acute']) {
       const base = join(dir, 'out');
@@ -34,4 +34,9 @@ test('wasm and native meshes are identical', (t) => {
       assert.equal(m.status, run.status === 0 ? 'ok' : 'target-not-met', what);
     }
   }
-});
+}
+
+test('wasm and native meshes are identical', (t) => expectSameMeshes(t, fixtures()));
+
+const title = 'wasm and native meshes are identical on the reference .poly inputs';
+test(title, needsReference(title), (t) => expectSameMeshes(t, referencePolys()));

@@ -1,7 +1,9 @@
-// The package as users get it: `npm pack`, the tarball installed into an empty project, and
-// there: every ../shared/data/poly input meshed to a certified acute mesh through the API,
-// acutemesh/single and acutemesh/worker imported, and the types resolved by tsc from
-// node_modules (moduleResolution nodenext and bundler).
+// The package as users get it: `npm pack` (its prepack step builds dist/), the tarball holding
+// exactly dist/ as wasm/assemble.mjs makes it, package.json, README.md and LICENSE; installed
+// into an empty project, and there: repository inputs (and the reference .poly inputs, when
+// that data is there) meshed to certified acute meshes through the API, acutemesh/single and
+// acutemesh/worker imported, and the types resolved by tsc from node_modules
+// (moduleResolution nodenext, bundler and node10).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -9,23 +11,30 @@ import { mkdtempSync, writeFileSync, rmSync, readdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 
-import { root, sharedPolys } from './helpers.mjs';
+import { root, testData, syntheticCgshop, needsReference, referencePolys } from './helpers.mjs';
 
 const npm = process.platform === 'win32' ? 'npm.cmd' : 'npm';
 const sh = (cmd, args, cwd) => execFileSync(cmd, args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
 
-test('npm pack, install into an empty project, mesh every shared .poly acute', async (t) => {
+// dist/ as wasm/assemble.mjs writes it: the Emscripten module, its base64 copy, the facade
+// and the types.
+const distFiles = ['acutemesh.mjs', 'acutemesh.wasm', 'wasm-inline.js',
+  ...readdirSync(join(root, 'wasm', 'js')), ...readdirSync(join(root, 'wasm', 'types'))].map((f) => `dist/${f}`);
+
+test('npm pack, install into an empty project, mesh acute there', async (t) => {
   const work = mkdtempSync(join(tmpdir(), 'acutemesh-pack-'));
   t.after(() => rmSync(work, { recursive: true, force: true }));
 
   const packed = JSON.parse(sh(npm, ['pack', '--json', '--pack-destination', work], root));
   const files = packed[0].files.map((f) => f.path).sort();
-  for (const f of ['package.json', 'README.md', 'LICENSE', 'dist/acutemesh.wasm', 'dist/acutemesh.mjs',
-    'dist/index.js', 'dist/node.js', 'dist/single.js', 'dist/wasm-inline.js', 'dist/worker.js',
-    'dist/worker-node.js', 'dist/mesh-worker.js', 'dist/mesh-worker-node.js', 'dist/index.d.ts',
-    'dist/single.d.ts', 'dist/worker.d.ts'])
+  // The files the exports map names, then the whole list.
+  for (const f of ['dist/acutemesh.wasm', 'dist/acutemesh.mjs', 'dist/index.js', 'dist/node.js',
+    'dist/single.js', 'dist/wasm-inline.js', 'dist/worker.js', 'dist/worker-node.js',
+    'dist/mesh-worker.js', 'dist/mesh-worker-node.js', 'dist/index.d.ts', 'dist/single.d.ts',
+    'dist/worker.d.ts'])
     assert.ok(files.includes(f), `${f} is not in the tarball`);
-  for (const f of files) assert.ok(/^(dist\/|package\.json$|README\.md$|LICENSE$)/.test(f), `${f} should not ship`);
+  assert.deepEqual(files, ['LICENSE', 'README.md', ...distFiles, 'package.json'].sort());
+  for (const f of packed[0].files) assert.ok(f.size > 0, `${f.path} is empty`);
   const tarball = join(work, packed[0].filename);
 
   const app = join(work, 'app');
@@ -43,7 +52,8 @@ import { meshInWorker } from 'acutemesh/worker';
 const am = await init();
 const out = [];
 for (const path of process.argv.slice(2)) {
-  const pslg = am.parsePoly(readFileSync(path, 'utf8'), { name: basename(path) });
+  const parse = path.endsWith('.poly') ? am.parsePoly : am.parseJson;
+  const pslg = parse(readFileSync(path, 'utf8'), { name: basename(path) });
   const m = am.mesh(pslg, { mode: 'acute' });
   const v = am.validate(pslg, m);
   out.push({ path, status: m.status, certified: m.stats.certified, nonAcute: m.stats.nonAcute,
@@ -55,19 +65,29 @@ const s = single.mesh(square, { mode: 'acute' });
 const w = await meshInWorker(square, { mode: 'acute' });
 console.log(JSON.stringify({ out, single: s.stats.certified, worker: w.stats.certified }));
 `);
-  const polys = sharedPolys();
-  assert.ok(polys.length >= 2);
-  const result = JSON.parse(sh(process.execPath, ['check.mjs', ...polys], app));
-  assert.equal(result.out.length, polys.length);
-  for (const r of result.out) {
-    assert.equal(r.valid, true, `${r.path}: ${r.errors.join('; ')}`);
-    assert.equal(r.certified, true, `${r.path} is not certified acute`);
-    assert.equal(r.nonAcute, 0);
-    assert.equal(r.status, 'ok');
-    assert.ok(r.triangles > 0);
-  }
-  assert.equal(result.single, true);
-  assert.equal(result.worker, true);
+  // Meshes the inputs at paths in the installed package: each certified acute.
+  const meshAcute = (paths) => {
+    const result = JSON.parse(sh(process.execPath, ['check.mjs', ...paths], app));
+    assert.equal(result.out.length, paths.length);
+    for (const r of result.out) {
+      assert.equal(r.valid, true, `${r.path}: ${r.errors.join('; ')}`);
+      assert.equal(r.certified, true, `${r.path} is not certified acute`);
+      assert.equal(r.nonAcute, 0);
+      assert.equal(r.status, 'ok');
+      assert.ok(r.triangles > 0);
+    }
+    assert.equal(result.single, true);
+    assert.equal(result.worker, true);
+  };
+  await t.test('repository inputs meshed acute', () => meshAcute([
+    join(testData, 'A.poly'), join(testData, 'plate.poly'), join(testData, 'naca0012.poly'),
+    join(syntheticCgshop, 'simple-polygon-exterior_50_synthetic.instance.json')]));
+  const title = 'reference .poly inputs meshed acute';
+  await t.test(title, needsReference(title), () => {
+    const polys = referencePolys();
+    assert.ok(polys.length >= 2);
+    meshAcute(polys);
+  });
 
   // Types from node_modules, as TypeScript users resolve them: through the exports map
   // (nodenext, bundler), or through "types" and "typesVersions" (the older node10).
