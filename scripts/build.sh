@@ -27,7 +27,7 @@ fi
 
 if ((!package_only)); then
   if ! configured build; then
-    cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release "$@"
+    cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DACUTEMESH_WERROR=ON "$@"
   fi
   cmake --build build -j"$(nproc)"
 fi
@@ -42,7 +42,7 @@ fi
 if ! configured build-wasm; then
   # emcmake would set the emulator (ctest's runner for the C++ tests) to
   # "node --experimental-wasm-threads", a flag Node 20 rejects: plain node it is.
-  emcmake cmake -S . -B build-wasm "${gen[@]}" -DCMAKE_BUILD_TYPE=Release \
+  emcmake cmake -S . -B build-wasm "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DACUTEMESH_WERROR=ON \
     -DCMAKE_CROSSCOMPILING_EMULATOR="$(command -v node)"
 fi
 # shellcheck disable=SC2086  # a list of target names

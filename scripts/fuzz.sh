@@ -30,9 +30,14 @@ flags="-g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefine
 if [[ ! -f build-fuzz/CMakeCache.txt ]]; then
   cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_CXX_FLAGS="$flags" -DACUTEMESH_FUZZ=ON -DACUTEMESH_TESTS=OFF -DACUTEMESH_CLI=OFF \
-    -DACUTEMESH_INSTALL=OFF >/dev/null
+    -DACUTEMESH_INSTALL=OFF -DACUTEMESH_WERROR=ON >/dev/null
 fi
-cmake --build build-fuzz -j"$jobs" --target "${harnesses[@]}" >/dev/null
+log=build-fuzz/build.log
+if ! cmake --build build-fuzz -j"$jobs" --target "${harnesses[@]}" >"$log" 2>&1; then
+  grep -E "error|Error" "$log" | head -n 30 >&2
+  echo "fuzz: the build failed (build-fuzz/build.log)" >&2
+  exit 1
+fi
 
 each=$(( total / ${#harnesses[@]} ))
 ((each >= 1)) || each=1

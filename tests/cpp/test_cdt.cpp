@@ -84,8 +84,9 @@ void expectValidCdt(const Pslg& in, const Built& b) {
   EXPECT_EQ(nonDelaunayEdges(b.T), 0u);
   for (size_t s = 0; s < in.segmentCount(); ++s) {
     uint32_t x = b.canonical[in.segments[2 * s]], y = b.canonical[in.segments[2 * s + 1]];
-    if (x != y)
+    if (x != y) {
       EXPECT_TRUE(isFixedChain(b.T, x, y, uint32_t(in.vertexCount()))) << "segment " << s;
+    }
   }
 }
 

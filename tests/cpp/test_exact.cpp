@@ -39,7 +39,9 @@ TEST(BigInt, ArithmeticMatchesInt128) {
     EXPECT_EQ((-A).decimal(), text(-__int128(a)));
     const int s = int(rng() % 60);
     EXPECT_EQ(A.shifted(s).decimal(), text(__int128(a) * (__int128(1) << s)));
-    if (a >= 0) EXPECT_EQ(A.shifted(-s).decimal(), text(__int128(a) >> s));
+    if (a >= 0) {
+      EXPECT_EQ(A.shifted(-s).decimal(), text(__int128(a) >> s));
+    }
     EXPECT_EQ((A * B).sign(), a == 0 || b == 0 ? 0 : (a < 0) == (b < 0) ? 1 : -1);
   }
 }
@@ -50,9 +52,10 @@ TEST(BigInt, GcdAndExactDivision) {
     const uint64_t g = rng() % 100000 + 1, a = (rng() % 1000000) * g, b = (rng() % 1000000) * g;
     const BigInt G = detail::gcd(BigInt(int64_t(a)), BigInt(-int64_t(b)));
     EXPECT_EQ(G.decimal(), std::to_string(std::gcd(a, b)));
-    if (G.sign())
+    if (G.sign()) {
       EXPECT_EQ(detail::divideExactly(BigInt(-int64_t(a)), G).decimal(),
                 text(-__int128(a / std::gcd(a, b))));
+    }
   }
   // Beyond 64 bits: (2^80 * 3 * 5) and (2^70 * 5 * 7) share 2^70 * 5.
   const BigInt a = BigInt(15).shifted(80), b = BigInt(35).shifted(70);

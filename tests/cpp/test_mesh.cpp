@@ -103,7 +103,9 @@ void expectPolyAndTransformsMeshed(const std::string& path) {
     Result r = mesh(moved, options);
     std::string what = path + " " + kTransformNames[kind];
     expectValid(moved, options, r, what);
-    if (kind < 6) EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount()) << what;
+    if (kind < 6) {
+      EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount()) << what;
+    }
   }
 }
 
@@ -186,7 +188,9 @@ TEST(Mesh, DelaunayOfRandomPointsAndTransforms) {
     Pslg moved = transformed(in, kind);
     Result r = mesh(moved, options);
     expectValid(moved, options, r, kTransformNames[kind]);
-    if (kind < 6) EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount());
+    if (kind < 6) {
+      EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount());
+    }
   }
   // Empty circumcircles, checked exactly on a sample of triangles.
   for (size_t t = 0; t < base.mesh.triangleCount(); t += 37) {
@@ -351,7 +355,9 @@ TEST(Mesh, CoordinatesFarFromOneAreScaledExactly) {
       o.mode = mode;
       Result r = mesh(far, o);
       expectValid(far, o, r, "2^" + std::to_string(exponent));
-      if (mode == Mode::Cdt) EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount());
+      if (mode == Mode::Cdt) {
+        EXPECT_EQ(r.mesh.triangleCount(), base.mesh.triangleCount());
+      }
       else EXPECT_TRUE(r.stats.certified);
     }
   }

@@ -179,7 +179,9 @@ TEST(Triangulation, RemoveVertexKeepsDelaunay) {
   EXPECT_EQ(delaunayViolations(T), 0u);
   // Every removed vertex can go back in.
   for (uint32_t v = 0; v < 300; ++v)
-    if (T.vertexEdge[v] == kNone) EXPECT_EQ(T.insert(v, 0), v);
+    if (T.vertexEdge[v] == kNone) {
+      EXPECT_EQ(T.insert(v, 0), v);
+    }
   EXPECT_EQ(checkStore(T), "");
   EXPECT_EQ(delaunayViolations(T), 0u);
 }

@@ -109,7 +109,9 @@ TEST(Vocabulary, OutputFormatsAreTheWriters) {
   for (const OutputFormatInfo& f : kOutputFormats) {
     EXPECT_EQ(&infoOf(f.value), &f);
     EXPECT_EQ(f.needsInstance, f.value == OutputFormat::Cgshop);
-    if (!f.needsInstance) EXPECT_EQ(std::string(f.extension), "." + std::string(f.name));
+    if (!f.needsInstance) {
+      EXPECT_EQ(std::string(f.extension), "." + std::string(f.name));
+    }
   }
   // The solution needs its instance: writeMeshFiles does not take it.
   ParseResult r = writeMeshFiles(m, "/nonexistent/x", {"cgshop"});
