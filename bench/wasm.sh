@@ -5,7 +5,8 @@
 #
 #  1. setup + scripts/build.sh (native build/ and the package's dist/), bench_acutemesh in
 #     build-bench/ (the native library call, as bench/run.sh builds it);
-#  2. inputs: bench/inputs/data/ (the committed refinement inputs), ../shared/data/poly/*.poly,
+#  2. inputs: bench/inputs/data/ (the committed refinement inputs), tests/data/A.poly, Lake Superior
+#     from the reference data ($ACUTEMESH_DATA, else ../shared/data; skipped without it),
 #     and bench/work/uniform-1e6.node (bench/gen.mjs, the same file bench/run.sh uses);
 #  3. bench/wasm.mjs, per input and mode, one right after the other (so load changes on this
 #     shared machine hit both alike): native `bench_acutemesh --repeat N` (best of N library

@@ -412,7 +412,7 @@ lines.push(
   `  - "Acute" and "acutemesh": DejaVu Sans (fonts-dejavu-core ${fontVersion}, opentype.js ${otVersion}) outlines, ` +
     'Bézier curves flattened to within 4 font units of 2048 per em, meshed with `--fill nonzero` (bench/inputs/text.mjs). ' +
     'The seed\'s "Acute" outline (153 points, font unknown) is not available; this is the same word, not the same input.',
-  '  - A.poly, superior.poly: ../shared/data/poly/ as they are. superior.poly has 303 vertices, the seed\'s Superior 522: ' +
+  '  - A.poly: tests/data/A.poly (Triangle\'s letter A); superior.poly: the reference data\'s poly/superior.poly ($ACUTEMESH_DATA, else ../shared/data; its rows are left out without it). superior.poly has 303 vertices, the seed\'s Superior 522: ' +
     'a different digitisation of the lake, so compare with care; aCute\'s rows are on these very files.',
   '  - Random: 1000 uniform random points in the unit square (fixed seed) + the 4 corners, meshed over their hull; ' +
     'plate: 200 x 100 with 3 round holes (16, 16, 12 vertices) and a slot (18), 66 vertices; ' +
