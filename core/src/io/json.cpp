@@ -65,63 +65,70 @@ bool JsonReader::string(std::string& out, const char* expected) {
       continue;
     }
     if (p_ + 1 >= n) return failAt(start, "a closing '\"' of the string");
-    const char esc = s_[p_ + 1];
-    p_ += 2;
-    switch (esc) {
-      case '"':
-        out += '"';
-        break;
-      case '\\':
-        out += '\\';
-        break;
-      case '/':
-        out += '/';
-        break;
-      case 'b':
-        out += '\b';
-        break;
-      case 'f':
-        out += '\f';
-        break;
-      case 'n':
-        out += '\n';
-        break;
-      case 'r':
-        out += '\r';
-        break;
-      case 't':
-        out += '\t';
-        break;
-      case 'u': {
-        uint32_t cp;
-        if (!hex4(cp)) return false;
-        if (cp >= 0xD800 && cp <= 0xDBFF) {
-          uint32_t lo;
-          if (p_ + 1 >= n || s_[p_] != '\\' || s_[p_ + 1] != 'u')
-            return c_.fail(line_,
-                           "expected a low surrogate '\\uDC00'-'\\uDFFF' after a high "
-                           "surrogate, found none");
-          p_ += 2;
-          if (!hex4(lo)) return false;
-          if (lo < 0xDC00 || lo > 0xDFFF)
-            return c_.fail(line_,
-                           "expected a low surrogate '\\uDC00'-'\\uDFFF', found a "
-                           "different escape");
-          cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
-        } else if (cp >= 0xDC00 && cp <= 0xDFFF) {
-          return c_.fail(line_,
-                         "expected a high surrogate before a low one, found a lone "
-                         "low surrogate");
-        }
-        appendUtf8(out, cp);
-        break;
-      }
-      default:
-        return c_.fail(line_, std::string("expected an escape (\\\" \\\\ \\/ \\b \\f \\n \\r "
-                                          "\\t \\uXXXX), found '\\") +
-                                  printable(std::string_view(&esc, 1)) + "'");
-    }
+    if (!escape(out)) return false;
   }
+}
+
+// The escape at p_ (a backslash, and one more character at least) onto out.
+bool JsonReader::escape(std::string& out) {
+  const size_t n = s_.size();
+  const char esc = s_[p_ + 1];
+  p_ += 2;
+  switch (esc) {
+    case '"':
+      out += '"';
+      break;
+    case '\\':
+      out += '\\';
+      break;
+    case '/':
+      out += '/';
+      break;
+    case 'b':
+      out += '\b';
+      break;
+    case 'f':
+      out += '\f';
+      break;
+    case 'n':
+      out += '\n';
+      break;
+    case 'r':
+      out += '\r';
+      break;
+    case 't':
+      out += '\t';
+      break;
+    case 'u': {
+      uint32_t cp;
+      if (!hex4(cp)) return false;
+      if (cp >= 0xD800 && cp <= 0xDBFF) {
+        uint32_t lo;
+        if (p_ + 1 >= n || s_[p_] != '\\' || s_[p_ + 1] != 'u')
+          return c_.fail(line_,
+                         "expected a low surrogate '\\uDC00'-'\\uDFFF' after a high "
+                         "surrogate, found none");
+        p_ += 2;
+        if (!hex4(lo)) return false;
+        if (lo < 0xDC00 || lo > 0xDFFF)
+          return c_.fail(line_,
+                         "expected a low surrogate '\\uDC00'-'\\uDFFF', found a "
+                         "different escape");
+        cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
+      } else if (cp >= 0xDC00 && cp <= 0xDFFF) {
+        return c_.fail(line_,
+                       "expected a high surrogate before a low one, found a lone "
+                       "low surrogate");
+      }
+      appendUtf8(out, cp);
+      break;
+    }
+    default:
+      return c_.fail(line_, std::string("expected an escape (\\\" \\\\ \\/ \\b \\f \\n \\r "
+                                        "\\t \\uXXXX), found '\\") +
+                                printable(std::string_view(&esc, 1)) + "'");
+  }
+  return true;
 }
 
 // Scans a JSON number at the current position without consuming it.

@@ -105,6 +105,7 @@ class JsonReader {
  private:
   std::string found(size_t pos) const;
   bool scanNumber(size_t& end, bool& integral);
+  bool escape(std::string& out);
   bool hex4(uint32_t& v);
   static void appendUtf8(std::string& out, uint32_t cp);
 
