@@ -346,12 +346,12 @@ function instantiateNow(factory, compiled, memoryLimit) {
   }
 }
 
-// An API object over one wasm instance M of `compiled`. After the instance aborts (out of
-// memory: the heap cannot grow past 2 GB or options.maxMemory; or an internal error), its
-// memory is lost to leaked allocations and a half-finished call, so the API object replaces
-// it with a fresh instance of the same compiled module and throws an AcuteMeshError: the
-// object stays usable, at the cost of a re-instantiation (milliseconds).
-function makeApi(factory, compiled, memoryLimit, M) {
+// Every call into a wasm instance goes through the function this returns. After the instance
+// aborts (out of memory: the heap cannot grow past 2 GB or options.maxMemory; or an internal
+// error), its memory is lost to leaked allocations and a half-finished call, so the caller
+// replaces it with a fresh instance of the same compiled module and throws an AcuteMeshError:
+// the API stays usable, at the cost of a re-instantiation (milliseconds).
+function makeCaller(factory, compiled, memoryLimit, M) {
   // Replaces the dead instance, synchronously where possible; otherwise calls made before the
   // asynchronous restart finishes throw RESTARTING.
   function restart() {
@@ -360,8 +360,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
     instantiate(factory, compiled, memoryLimit).then((m) => { M = m; }, () => {});
   }
 
-  // Every call into wasm goes through here.
-  function call(f) {
+  return function call(f) {
     if (!M) {
       throw new AcuteMeshError('RESTARTING',
         'the wasm instance is restarting after an earlier failure; try again shortly');
@@ -383,14 +382,97 @@ function makeApi(factory, compiled, memoryLimit, M) {
         `internal error in the wasm module (${e && e.message ? e.message : e}); the module was reset ` +
         `and can be used again`);
     }
-  }
+  };
+}
 
+// The core calls progress back synchronously; a true return asks it to stop. An exception from
+// the user's callback is kept and rethrown (rethrow()) after the core has returned, so it never
+// unwinds through C++ frames.
+function progressBridge(onProgress, signal) {
+  let callbackError;
+  let failed = false;
+  const callback = onProgress || signal ? (phase, fraction, vertices) => {
+    if (onProgress && !failed) {
+      try {
+        onProgress({ phase, fraction, vertices });
+      } catch (e) {
+        callbackError = e;
+        failed = true;
+      }
+    }
+    return failed || (signal !== undefined && signal.aborted);
+  } : undefined;
+  return { callback, rethrow() { if (failed) throw callbackError; } };
+}
+
+// The readers, each returning a PSLG that carries its format (parsed()).
+function makeParsers(call) {
+  const nameOr = (options, fallback) => (options.name === undefined ? fallback : String(options.name));
+  return {
+    parsePoly(text, options = {}) {
+      checkText(text, 'text');
+      checkObject(options, 'options');
+      const name = nameOr(options, 'input.poly');
+      const nodeText = options.nodeText === undefined ? '' : options.nodeText;
+      checkText(nodeText, 'options.nodeText');
+      const nodeName = name.replace(/\.poly$/i, '') + '.node';
+      return parsed(call((I) => I.core_parsePoly(utf8.encode(text), name, utf8.encode(nodeText), nodeName)));
+    },
+
+    parseNode(text, options = {}) {
+      checkText(text, 'text');
+      checkObject(options, 'options');
+      return parsed(call((I) => I.core_parseNode(utf8.encode(text), nameOr(options, 'input.node'))));
+    },
+
+    // JSON in any of the core's three shapes: a PSLG, {"rings": ...} (fill 'evenodd' unless
+    // the caller says otherwise) or a CG:SHOP 2025 instance (format 'cgshop', instanceUid set).
+    parseJson(text, options = {}) {
+      checkText(text, 'text');
+      checkObject(options, 'options');
+      return parsed(call((I) => I.core_parseJson(utf8.encode(text), nameOr(options, 'input.json'))));
+    },
+  };
+}
+
+// The writers: any format by its name (write), and one function per format.
+function makeWriters(call, names) {
   const formatter = (format) => (m) => {
     const mesh = toMesh(m);
     checkMeshIndices(mesh);
     return call((I) => I.core_format(format, mesh));
   };
+  // The CG:SHOP 2025 solution of a mesh of `instance` (parseJson's result for an instance).
+  const toCgshop = (m, instance) => {
+    const mesh = toMesh(m);
+    checkMeshIndices(mesh);
+    checkObject(instance, 'instance');
+    if (typeof instance.instanceUid !== 'string')
+      throw new TypeError('instance.instanceUid must be a string (parseJson of a CG:SHOP 2025 instance)');
+    const n = toCoordinates(instance.points, 'instance.points').length / 2;
+    return call((I) => I.core_formatCgshop(mesh, instance.instanceUid, n));
+  };
+  return {
+    // Any writer by its format's name (vocabulary.outputFormats); 'cgshop' needs the instance.
+    write(m, format, instance) {
+      if (names.check(format, 'outputFormat', 'format', undefined) === undefined)
+        throw new TypeError('format must be a string, not undefined');
+      return format === 'cgshop' ? toCgshop(m, instance) : formatter(format)(m);
+    },
+    toNode: formatter('node'),
+    toEle: formatter('ele'),
+    toPoly: formatter('poly'),
+    toJSON: formatter('json'),
+    toOFF: formatter('off'),
+    toOBJ: formatter('obj'),
+    toSVG: formatter('svg'),
+    toCgshop,
+  };
+}
 
+// The API object over one wasm instance M of `compiled` (makeCaller keeps it alive).
+function makeApi(factory, compiled, memoryLimit, M) {
+  const call = makeCaller(factory, compiled, memoryLimit, M);
   // The core's names and defaults (the same in every instance of the module), and its input
   // policy, for the argument checks.
   const vocabulary = deepFreeze(M.core_vocabulary());
@@ -401,38 +483,14 @@ function makeApi(factory, compiled, memoryLimit, M) {
       call((I) => I.core_inputPolicy(format, exactFeetChosen, options)),
   };
 
-  const api = {
+  return {
     version: M.core_version(),
 
     // Modes, fill rules, statuses, vertex kinds, input and output formats ({name, value,
     // description, ...} each, in the core's order) and the options' defaults.
     vocabulary,
 
-    parsePoly(text, options = {}) {
-      checkText(text, 'text');
-      checkObject(options, 'options');
-      const name = options.name === undefined ? 'input.poly' : String(options.name);
-      const nodeText = options.nodeText === undefined ? '' : options.nodeText;
-      checkText(nodeText, 'options.nodeText');
-      const nodeName = name.replace(/\.poly$/i, '') + '.node';
-      return parsed(call((I) => I.core_parsePoly(utf8.encode(text), name, utf8.encode(nodeText), nodeName)));
-    },
-
-    parseNode(text, options = {}) {
-      checkText(text, 'text');
-      checkObject(options, 'options');
-      const name = options.name === undefined ? 'input.node' : String(options.name);
-      return parsed(call((I) => I.core_parseNode(utf8.encode(text), name)));
-    },
-
-    // JSON in any of the core's three shapes: a PSLG, {"rings": ...} (fill 'evenodd' unless
-    // the caller says otherwise) or a CG:SHOP 2025 instance (format 'cgshop', instanceUid set).
-    parseJson(text, options = {}) {
-      checkText(text, 'text');
-      checkObject(options, 'options');
-      const name = options.name === undefined ? 'input.json' : String(options.name);
-      return parsed(call((I) => I.core_parseJson(utf8.encode(text), name)));
-    },
+    ...makeParsers(call),
 
     fromRings: (rings, options) => ringsToPslg(rings, options, core),
 
@@ -444,24 +502,9 @@ function makeApi(factory, compiled, memoryLimit, M) {
         throw new TypeError(`options.onProgress must be a function, not ${describe(onProgress)}`);
       checkSignal(signal);
       if (signal && signal.aborted) throw abortError(signal);
-      // The core calls back synchronously; a true return asks it to stop. An exception from
-      // the user's callback is kept and rethrown after the core has returned, so it never
-      // unwinds through C++ frames.
-      let callbackError;
-      let failed = false;
-      const progress = onProgress || signal ? (phase, fraction, vertices) => {
-        if (onProgress && !failed) {
-          try {
-            onProgress({ phase, fraction, vertices });
-          } catch (e) {
-            callbackError = e;
-            failed = true;
-          }
-        }
-        return failed || (signal !== undefined && signal.aborted);
-      } : undefined;
-      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, opts, progress));
-      if (failed) throw callbackError;
+      const progress = progressBridge(onProgress, signal);
+      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, opts, progress.callback));
+      progress.rethrow();
       if (r.status === 'cancelled') throw abortError(signal);
       if (r.status === 'bad-input') throw badInput(r.message);
       return {
@@ -485,38 +528,13 @@ function makeApi(factory, compiled, memoryLimit, M) {
       return call((I) => I.core_validate(input.points, input.segments, input.holes, mesh, opts));
     },
 
-    // Any writer by its format's name (vocabulary.outputFormats); 'cgshop' needs the instance.
-    write(m, format, instance) {
-      if (core.names.check(format, 'outputFormat', 'format', undefined) === undefined)
-        throw new TypeError('format must be a string, not undefined');
-      return format === 'cgshop' ? api.toCgshop(m, instance) : formatter(format)(m);
-    },
-
-    toNode: formatter('node'),
-    toEle: formatter('ele'),
-    toPoly: formatter('poly'),
-    toJSON: formatter('json'),
-    toOFF: formatter('off'),
-    toOBJ: formatter('obj'),
-    toSVG: formatter('svg'),
-
-    // The CG:SHOP 2025 solution of a mesh of `instance` (parseJson's result for an instance).
-    toCgshop(m, instance) {
-      const mesh = toMesh(m);
-      checkMeshIndices(mesh);
-      checkObject(instance, 'instance');
-      if (typeof instance.instanceUid !== 'string')
-        throw new TypeError('instance.instanceUid must be a string (parseJson of a CG:SHOP 2025 instance)');
-      const n = toCoordinates(instance.points, 'instance.points').length / 2;
-      return call((I) => I.core_formatCgshop(mesh, instance.instanceUid, n));
-    },
+    ...makeWriters(call, core.names),
 
     // The wasm heap: its size in bytes (grows, never shrinks) and the bytes allocated in it.
     memory() {
       return call((I) => I.core_memory());
     },
   };
-  return api;
 }
 
 // Entry points call this with the glue's factory and a function that resolves the

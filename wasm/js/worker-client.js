@@ -23,126 +23,137 @@ function rebuildError(e) {
   return error;
 }
 
+// One worker and its queue of jobs: mesh() calls run one after another; the worker starts on
+// the first and again after an abort or a crash.
+class MeshWorker {
+  constructor(spawn, initOptions) {
+    this.spawn = spawn;
+    this.initOptions = initOptions;
+    this.worker = null;
+    this.nextId = 1;
+    this.active = null;  // { id, resolve, reject, onProgress, cleanup }
+    this.queue = [];
+    this.closed = false;
+  }
+
+  stopWorker() {
+    if (this.worker) this.worker.terminate();
+    this.worker = null;
+  }
+
+  ensureWorker() {
+    if (this.worker) return this.worker;
+    const w = this.spawn();
+    w.onMessage((message) => {
+      const job = this.active;
+      if (w !== this.worker || !job || message.id !== job.id) return;
+      if (message.type === 'progress') {
+        if (!job.onProgress) return;
+        try {
+          job.onProgress(message.progress);
+        } catch (e) {
+          // The job cannot be told to stop any other way; stop the worker before the next
+          // job is posted to it.
+          this.stopWorker();
+          this.finish(job, null, e);
+        }
+      } else if (message.type === 'result') {
+        this.finish(job, message.mesh, null);
+      } else if (message.type === 'error') {
+        this.finish(job, null, rebuildError(message.error));
+      }
+    });
+    w.onError((error) => {
+      if (w !== this.worker) return;
+      this.worker = null;
+      w.terminate();
+      if (this.active) this.finish(this.active, null, error instanceof Error ? error : new Error(String(error)));
+    });
+    this.worker = w;
+    return w;
+  }
+
+  finish(job, mesh, error) {
+    if (this.active !== job) return;
+    this.active = null;
+    if (this.worker) this.worker.busy(false);
+    job.cleanup();
+    if (error) job.reject(error);
+    else job.resolve(mesh);
+    this.startNext();
+  }
+
+  startNext() {
+    if (this.active || this.queue.length === 0) return;
+    const job = this.queue.shift();
+    this.active = job;
+    try {
+      const w = this.ensureWorker();
+      w.busy(true);
+      w.post({ id: job.id, pslg: job.pslg, options: job.options, initOptions: this.initOptions });
+    } catch (e) {
+      // No worker (the platform refused one), or input that cannot be cloned (functions,
+      // say): this job fails, the queue goes on.
+      this.finish(job, null, e);
+    }
+  }
+
+  mesh(pslg, options = {}) {
+    if (this.closed) return Promise.reject(new Error('acutemesh: this mesh worker was terminated'));
+    if (typeof options !== 'object' || options === null)
+      return Promise.reject(new TypeError('options must be an object'));
+    const { signal, onProgress, ...rest } = options;
+    if (onProgress !== undefined && typeof onProgress !== 'function')
+      return Promise.reject(new TypeError('options.onProgress must be a function'));
+    if (signal !== undefined && (typeof signal !== 'object' || signal === null || typeof signal.aborted !== 'boolean'))
+      return Promise.reject(new TypeError('options.signal must be an AbortSignal'));
+    if (signal && signal.aborted) return Promise.reject(abortReason(signal));
+    return new Promise((resolve, reject) => {
+      const job = {
+        id: this.nextId++, pslg, options: { ...rest, progress: onProgress !== undefined },
+        resolve, reject, onProgress, cleanup: () => {},
+      };
+      if (signal) this.cancelOnAbort(job, signal);
+      this.queue.push(job);
+      this.startNext();
+    });
+  }
+
+  // An abort takes a waiting job off the queue, or stops the worker running it.
+  cancelOnAbort(job, signal) {
+    const onAbort = () => {
+      const i = this.queue.indexOf(job);
+      if (i >= 0) {
+        this.queue.splice(i, 1);
+        job.cleanup();
+        job.reject(abortReason(signal));
+      } else if (this.active === job) {
+        this.stopWorker();
+        this.finish(job, null, abortReason(signal));
+      }
+    };
+    signal.addEventListener('abort', onAbort, { once: true });
+    job.cleanup = () => signal.removeEventListener('abort', onAbort);
+  }
+
+  terminate() {
+    this.closed = true;
+    this.stopWorker();
+    const error = new Error('acutemesh: the mesh worker was terminated');
+    if (this.active) this.finish(this.active, null, error);
+    for (const job of this.queue.splice(0)) {
+      job.cleanup();
+      job.reject(error);
+    }
+  }
+}
+
 export function makeWorkerHelper(spawn) {
   function createMeshWorker(workerOptions = {}) {
     if (typeof workerOptions !== 'object' || workerOptions === null)
       throw new TypeError('options must be an object');
-    const initOptions = workerOptions.init;
-    let worker = null;
-    let nextId = 1;
-    let active = null;  // { id, resolve, reject, onProgress, cleanup }
-    const queue = [];
-    let closed = false;
-
-    function stopWorker() {
-      if (worker) worker.terminate();
-      worker = null;
-    }
-
-    function ensureWorker() {
-      if (worker) return worker;
-      const w = spawn();
-      w.onMessage((message) => {
-        if (w !== worker || !active || message.id !== active.id) return;
-        if (message.type === 'progress') {
-          if (active.onProgress) {
-            try {
-              active.onProgress(message.progress);
-            } catch (e) {
-              // The job cannot be told to stop any other way; stop the worker before the next
-              // job is posted to it.
-              stopWorker();
-              finish(active, null, e);
-            }
-          }
-        } else if (message.type === 'result') {
-          finish(active, message.mesh, null);
-        } else if (message.type === 'error') {
-          finish(active, null, rebuildError(message.error));
-        }
-      });
-      w.onError((error) => {
-        if (w !== worker) return;
-        worker = null;
-        w.terminate();
-        if (active) finish(active, null, error instanceof Error ? error : new Error(String(error)));
-      });
-      worker = w;
-      return w;
-    }
-
-    function finish(job, mesh, error) {
-      if (active !== job) return;
-      active = null;
-      if (worker) worker.busy(false);
-      job.cleanup();
-      if (error) job.reject(error);
-      else job.resolve(mesh);
-      startNext();
-    }
-
-    function startNext() {
-      if (active || queue.length === 0) return;
-      const job = queue.shift();
-      active = job;
-      try {
-        const w = ensureWorker();
-        w.busy(true);
-        w.post({ id: job.id, pslg: job.pslg, options: job.options, initOptions });
-      } catch (e) {
-        // No worker (the platform refused one), or input that cannot be cloned (functions,
-        // say): this job fails, the queue goes on.
-        finish(job, null, e);
-      }
-    }
-
-    function mesh(pslg, options = {}) {
-      if (closed) return Promise.reject(new Error('acutemesh: this mesh worker was terminated'));
-      if (typeof options !== 'object' || options === null)
-        return Promise.reject(new TypeError('options must be an object'));
-      const { signal, onProgress, ...rest } = options;
-      if (onProgress !== undefined && typeof onProgress !== 'function')
-        return Promise.reject(new TypeError('options.onProgress must be a function'));
-      if (signal !== undefined && (typeof signal !== 'object' || signal === null || typeof signal.aborted !== 'boolean'))
-        return Promise.reject(new TypeError('options.signal must be an AbortSignal'));
-      if (signal && signal.aborted) return Promise.reject(abortReason(signal));
-      return new Promise((resolve, reject) => {
-        const job = {
-          id: nextId++, pslg, options: { ...rest, progress: onProgress !== undefined },
-          resolve, reject, onProgress, cleanup: () => {},
-        };
-        if (signal) {
-          const onAbort = () => {
-            const i = queue.indexOf(job);
-            if (i >= 0) {
-              queue.splice(i, 1);
-              job.cleanup();
-              reject(abortReason(signal));
-            } else if (active === job) {
-              stopWorker();
-              finish(job, null, abortReason(signal));
-            }
-          };
-          signal.addEventListener('abort', onAbort, { once: true });
-          job.cleanup = () => signal.removeEventListener('abort', onAbort);
-        }
-        queue.push(job);
-        startNext();
-      });
-    }
-
-    function terminate() {
-      closed = true;
-      stopWorker();
-      const error = new Error('acutemesh: the mesh worker was terminated');
-      if (active) finish(active, null, error);
-      for (const job of queue.splice(0)) {
-        job.cleanup();
-        job.reject(error);
-      }
-    }
-
-    return { mesh, terminate };
+    const w = new MeshWorker(spawn, workerOptions.init);
+    return { mesh: (pslg, options) => w.mesh(pslg, options), terminate: () => w.terminate() };
   }
 
   // One shared worker for meshInWorker(), started on first use.
