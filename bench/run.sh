@@ -31,7 +31,7 @@ note() { echo "bench: $*" >&2; }
 # Our CLI alone (not the tests, which may be mid-change), in build/ as scripts/build.sh makes it.
 have_cli=1
 mkdir -p build
-if ! { [[ -f build/CMakeCache.txt && ( -f build/Makefile || -f build/build.ninja ) ]] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release; } >build/bench-cli.log 2>&1 ||
+if ! { [[ -f build/CMakeCache.txt && ( -f build/Makefile || -f build/build.ninja ) ]] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DACUTEMESH_WERROR=ON; } >build/bench-cli.log 2>&1 ||
    ! cmake --build build --target acutemesh -j"$jobs" >>build/bench-cli.log 2>&1 || [[ ! -x build/acutemesh ]]; then
   have_cli=0
   note "our CLI did not build (see build/bench-cli.log); its columns will be n/a"

@@ -7,7 +7,7 @@ export type Mode =
   | 'delaunay'
   /** Constrained Delaunay triangulation of the PSLG, restricted to its domain (default). */
   | 'cdt'
-  /** Refine until every angle >= minAngle (default 20) and every area <= maxArea. */
+  /** Refine until every angle >= minAngle and every area <= maxArea (minAngle 20 when neither is given). */
   | 'quality'
   /** Refine until every angle <= 90 degrees (certified exactly). */
   | 'nonobtuse'
@@ -119,7 +119,7 @@ export interface MeshOptions {
   exactFeet?: boolean;
   /** Degrees; acute mode: every angle < maxAngle (60 < maxAngle <= 90; default 90, exact). */
   maxAngle?: number;
-  /** Degrees; smallest angle wanted (quality mode: default 20; 0 <= minAngle < 60; terminates up to 40, and above 40 a run that wanders is meshed to 40 instead, status 'target-not-met'). */
+  /** Degrees; smallest angle wanted (quality mode: 20 when neither minAngle nor maxArea is given; 0 <= minAngle < 60; terminates up to 40, and above 40 a run that wanders is meshed to 40 instead, status 'target-not-met'). */
   minAngle?: number;
   /** Largest triangle area wanted (0: none). */
   maxArea?: number;
@@ -239,10 +239,13 @@ export interface Validation {
   errors: string[];
 }
 
+/** The options the mesh was made with (validate() takes mesh.options when none are given). */
 export interface ValidateOptions {
   mode?: Mode;
   fill?: FillRule;
   convexHull?: boolean;
+  /** Split points lie exactly on their segments (no rounding allowance); as meshed. */
+  exactSegments?: boolean;
 }
 
 export interface ParseOptions {
@@ -337,6 +340,7 @@ export interface AcuteMesh {
 
 /** What toCgshop needs of the instance: parseJson's result for it. */
 export interface CgshopInstance {
+  /** Set by parseJson for a CG:SHOP 2025 instance; toCgshop throws a TypeError without it. */
   instanceUid?: string;
   points: Pslg['points'] | ArrayLike<number>;
 }

@@ -29,7 +29,8 @@ enum class Status : int {
 enum class Mode {
   Delaunay,   // Delaunay triangulation of the vertices; segments and holes ignored
   Cdt,        // constrained Delaunay triangulation of the PSLG, restricted to its domain
-  Quality,    // refine until every angle >= minAngle (default 20) and area <= maxArea
+  Quality,    // refine until every angle >= minAngle and area <= maxArea (minAngle
+              // kQualityDefaultMinAngle when neither is given)
   NonObtuse,  // refine until every angle <= 90 degrees (exact)
   Acute,      // refine until every angle < maxAngle (default 90, exact at 90)
 };

@@ -115,7 +115,7 @@ void Polish::roundInHalves(int r) {
   std::vector<Step> log;
   other.reduce().scope = {&mine[1], &log};
   reduce_.scope = {&mine[0], nullptr};
-  auto secondHalf = [&] { other.polishing().round(true); };
+  auto secondHalf = [&] { other.polisher().round(true); };
 #ifdef ACUTEMESH_THREADS
   if (threadsFor(job_.options) > 1) {
     std::thread helper(secondHalf);

@@ -38,7 +38,7 @@ class Refiner {
   // Improvement rounds (acute, non-obtuse; on a mesh that meets the target).
   void polish() { polish_.run(); }
   Reduce& reduce() { return reduce_; }
-  Polish& polishing() { return polish_; }
+  Polish& polisher() { return polish_; }
 
  private:
   RefineState& s_;
