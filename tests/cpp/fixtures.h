@@ -8,6 +8,8 @@
 #include <dirent.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,25 @@ inline std::vector<std::string> cgshopInstances(const std::string& dir) {
   std::sort(files.begin(), files.end());
   return files;
 }
+
+// A file's bytes ("" if it cannot be read).
+inline std::string readText(const std::string& path) {
+  std::string s;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return s;
+  char buf[4096];
+  size_t got;
+  while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, got);
+  std::fclose(f);
+  return s;
+}
+
+inline bool startsWith(const std::string& s, const std::string& prefix) {
+  return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+// The same double to the bit (0 and -0 differ, a NaN equals itself).
+inline bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // validate()'s errors, one per line; empty when the mesh is valid.
 inline std::string validationErrors(const acutemesh::Pslg& in, const acutemesh::Options& o,

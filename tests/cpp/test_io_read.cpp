@@ -21,10 +21,14 @@
 #include <vector>
 
 #include "acutemesh/io.h"
+#include "fixtures.h"
 #include "reference_data.h"
 
 namespace fs = std::filesystem;
 using namespace acutemesh;
+using fixtures::readText;
+using fixtures::sameBits;
+using fixtures::startsWith;
 
 // ------------------------------------------------------------------------------------------
 // The largest single allocation while tracking is on: parsers must not allocate what a count
@@ -58,23 +62,6 @@ void operator delete[](void* p, size_t) noexcept { std::free(p); }
 namespace {
 
 const std::string kData = ACUTEMESH_TEST_DATA "/io/";
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-std::string readText(const std::string& path) {
-  std::string s;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return s;
-  char buf[4096];
-  size_t got;
-  while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, got);
-  std::fclose(f);
-  return s;
-}
-
-bool startsWith(const std::string& s, const std::string& prefix) {
-  return s.compare(0, prefix.size(), prefix) == 0;
-}
 
 // ------------------------------------------------------------------------------------------
 // Whole inputs: Triangle's letter A, Lake Superior, CG:SHOP 2025 instances

@@ -12,28 +12,15 @@
 #include <vector>
 
 #include "acutemesh/io.h"
+#include "fixtures.h"
 
 namespace fs = std::filesystem;
 using namespace acutemesh;
+using fixtures::readText;
+using fixtures::sameBits;
+using fixtures::startsWith;
 
 namespace {
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-std::string readText(const std::string& path) {
-  std::string s;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return s;
-  char buf[4096];
-  size_t got;
-  while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, got);
-  std::fclose(f);
-  return s;
-}
-
-bool startsWith(const std::string& s, const std::string& prefix) {
-  return s.compare(0, prefix.size(), prefix) == 0;
-}
 
 
 Mesh twoTriangles() {
