@@ -473,3 +473,24 @@ TEST(Validate, LargeGrid) {
 }
 
 }  // namespace
+
+// tests/data/bad/max-double-triangle.node, its triangle taken out and a hole point at minus
+// infinity (the mean of its corners' y overflows): the points validate() locates then span more
+// than the double range, and sizing its search grid by that span asked for an impossible vector
+// (std::length_error natively, an abort in WebAssembly). Found by a differential run of the
+// validate/ split against the old validate.cpp.
+TEST(Validate, NonFiniteHoleBeyondTheDoubleRange) {
+  const double big = 1.7976931348623157e308;
+  Pslg in;
+  in.points = {-big, -big, big, -big, 0, big};
+  Options o;
+  o.mode = Mode::Delaunay;
+  acutemesh::Result r = acutemesh::mesh(in, o);
+  ASSERT_EQ(r.mesh.triangleCount(), 1u);
+  Mesh m = r.mesh;
+  m.triangles.clear();
+  in.holes = {0, -INFINITY};
+  Validation v = acutemesh::validate(in, m, o);
+  EXPECT_FALSE(v.ok);
+  EXPECT_FALSE(v.errors.empty());
+}

@@ -1,5 +1,6 @@
 #include "query_grid.h"
 
+#include <cmath>
 #include <limits>
 
 namespace acutemesh::validation {
@@ -11,7 +12,11 @@ QueryGrid::QueryGrid(std::vector<Query> queries) : q_(std::move(queries)) {
   for (const Query& q : q_)
     for (int k = 0; k < 2; ++k)
       lo_[k] = std::min(lo_[k], q.xy[k]), hi_[k] = std::max(hi_[k], q.xy[k]);
+  // An extent beyond the double range (a non-finite hole point, say, which validate() reports)
+  // gets one column or row: the grid only narrows the search, cell() clamps every point.
   double w = hi_[0] - lo_[0], h = hi_[1] - lo_[1], cells = double(q_.size());
+  if (!std::isfinite(w)) w = 0;
+  if (!std::isfinite(h)) h = 0;
   if (w > 0 && h > 0) {
     nx_ = int(std::clamp(std::sqrt(cells * w / h), 1.0, cells));
     ny_ = int(std::clamp(cells / nx_, 1.0, cells));
