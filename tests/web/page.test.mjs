@@ -368,7 +368,11 @@ test('Cancel stops a long run; the page keeps responding and meshes again afterw
   const gaps = await page.evaluate(() => window.__gaps.slice(2));
   const worst = Math.max(...gaps);
   console.log(`# while meshing: ${gaps.length} frames, longest ${worst.toFixed(1)} ms`);
-  assert.ok(worst < 100, `a frame took ${worst} ms while the worker meshed`);
+  // Meshing on the main thread would leave one gap as long as the run (1.5 s here); a busy
+  // machine (CI shares its two cores) can stretch single frames to 100 ms, so the bounds are
+  // set between the two.
+  assert.ok(gaps.length >= 20, `only ${gaps.length} frames in 1.5 s while the worker meshed`);
+  assert.ok(worst < 400, `a frame took ${worst} ms while the worker meshed`);
   const t0 = Date.now();
   await page.click('[data-testid=cancel-button]');
   await page.waitForFunction(() => /Cancelled/.test(document.getElementById('status').textContent), null, { timeout: 2000 });
