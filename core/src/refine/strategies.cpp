@@ -70,9 +70,11 @@ std::vector<Strategy> strategiesFor(const Options& options) {
   return strategies;
 }
 
-// The vertex count at which a run stops, for a Steiner cap (0: none) and the budget.
+// The vertex count at which a run stops, for a Steiner cap (0: none) and the budget; and the
+// domain's area the budget was reckoned with (domainArea's, for the runs' reservations).
 struct SteinerLimit {
   uint32_t startVertices;
+  double area;
   double budget;  // steinerBudget's
   uint32_t with(uint32_t steinerCap) const {
     double cap = steinerCap ? std::min(budget, double(steinerCap)) : budget;
@@ -84,17 +86,20 @@ struct SteinerLimit {
 class StrategyRun {
  public:
   StrategyRun() = default;
-  StrategyRun(const RefineState& start, const Job& job, uint32_t steinerLimit)
+  StrategyRun(const RefineState& start, const Job& job, const SteinerLimit& limit,
+              uint32_t steinerCap)
       : box_(std::make_unique<Box>(start, job)) {
+    const uint32_t steinerLimit = limit.with(steinerCap);
     box_->limits.steinerLimit = steinerLimit;
     const Options& options = job.options;
     if (options.maxArea > 0) {
       // About one vertex per two triangles of a third of the bound's area, within the limit,
       // and no more than kReservedVerticesAtMost more: a bound far too small for the time
       // limit must not reserve gigabytes up front.
-      const double area = domainArea(start.T, options), n = start.T.vertexCount();
-      box_->state.reserve(size_t(std::min({double(steinerLimit), n + 1.6 * area / options.maxArea,
-                                           n + double(kReservedVerticesAtMost)})));
+      const double n = start.T.vertexCount();
+      box_->state.reserve(
+          size_t(std::min({double(steinerLimit), n + 1.6 * limit.area / options.maxArea,
+                           n + double(kReservedVerticesAtMost)})));
     }
   }
   void go() {
@@ -214,7 +219,7 @@ class ConcurrentStrategies {
     const size_t i = next_++;
     Slot& slot = slots_[i];
     const uint32_t cap = i == handed_ ? slot.cap : choice_.steinerCap;
-    slot.run = StrategyRun(start_, jobs_(i), limit_.with(cap));
+    slot.run = StrategyRun(start_, jobs_(i), limit_, cap);
     slot.gate.limit = limit_.with(cap);
     slot.run.limits().gate = &slot.gate;
     slot.run.limits().reportProgress = caller;
@@ -275,8 +280,8 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   const std::vector<Strategy> strategies = strategiesFor(options);
   const Target target(options);
   const Jobs jobs{input, options, target, budget, strategies, smallestEdge2(input)};
-  const SteinerLimit limit{start.T.vertexCount(),
-                           steinerBudget(input, options, domainArea(start.T, options))};
+  const double area = domainArea(start.T, options);
+  const SteinerLimit limit{start.T.vertexCount(), area, steinerBudget(input, options, area)};
   StrategyChoice choice(start, budget, steinerCap);
   size_t next = 0;
 #ifdef ACUTEMESH_THREADS
@@ -292,7 +297,7 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
 #endif
   for (; next < strategies.size() && !choice.done(); ++next) {
     if (strategies[next].fallback && choice.best.met) continue;
-    StrategyRun run(start, jobs(next), limit.with(choice.cap()));
+    StrategyRun run(start, jobs(next), limit, choice.cap());
     run.go();
     choice.consider(std::move(run));
   }
