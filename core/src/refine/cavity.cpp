@@ -22,7 +22,8 @@ Cavity::Rim Cavity::grow(const double* x) {
       const double *a = s_.P(T.tri[e]), *b = s_.P(T.tri[next(e)]);
       if (T.isFixed(e)) {
         double d = dot2d(x, a, b);
-        bool inDisk = job_.target.nonObtuse ? d < 0 : d <= 0;  // a right angle at x is allowed then
+        // x in the closed diametral disk: the angle at x too large (right allowed non-obtuse).
+        bool inDisk = job_.target.tooLarge(d);
         if (inDisk && dist2(a, b) > encroachedLen) encroached = e, encroachedLen = dist2(a, b);
         if (orient2d(a, b, x) < 0 && beyond == kNone) beyond = e;
         continue;
