@@ -129,6 +129,8 @@ val statsToJs(const Stats& s) {
   o.set("targetMet", s.targetMet);
   o.set("certified", s.certified);
   o.set("smallestInputAngle", s.smallestInputAngle);
+  o.set("smallestDomainAngle", s.smallestDomainAngle);
+  o.set("angleFloor", s.angleFloor);
   val phases = val::object();
   for (const PhaseTime& p : s.phases) phases.set(p.phase, p.seconds);
   o.set("phases", phases);

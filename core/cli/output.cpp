@@ -96,6 +96,8 @@ void printStats(const std::string& input, const Options& opt, const Result& r,
   std::printf(" \"targetMet\": %s, \"certified\": %s, \"smallestInputAngle\": %.17g,\n",
               s.targetMet ? "true" : "false", s.certified ? "true" : "false",
               s.smallestInputAngle);
+  std::printf(" \"smallestDomainAngle\": %.17g, \"angleFloor\": %.17g,\n", s.smallestDomainAngle,
+              s.angleFloor);
   // Triangles (indices into the written .ele / "triangles") that miss the target.
   std::printf(" \"missedTriangles\": [");
   for (size_t i = 0; i < s.missedTriangles.size(); ++i)

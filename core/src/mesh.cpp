@@ -10,6 +10,7 @@
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "domain_angles.h"
 #include "portable_math.h"
 
 namespace acutemesh {
@@ -431,9 +432,11 @@ Result meshInRange(const Pslg& input, const Options& options) {
   std::vector<uint8_t> freeVertex;
   std::vector<detail::ExactVertex> exact;
   if (refining) {
-    warnAboutInputAngles(input, target, stats);
     T.inside = std::move(inside);
     T.inside.resize(T.tri.size() / 3, 0);
+    stats.smallestDomainAngle = detail::smallestDomainAngle(T);
+    stats.angleFloor = detail::angleFloor(stats.smallestDomainAngle);
+    warnAboutInputAngles(input, target, stats);
     step = detail::refine(T, input, target, budget, freeVertex, exact);
     inside = std::move(T.inside);
     clock.end("refine");

@@ -143,6 +143,11 @@ struct Stats {
   // Smallest angle between two input segments at a vertex (degrees; 180 when no two segments
   // meet). No mesh has all angles below 90 - smallestInputAngle / 2.
   double smallestInputAngle = 180;
+  // The smallest corner of the domain (degrees), measured inside it (a reflex notch is over
+  // 180), between two input segments or the domain's edges; 360 when there is none. It sets
+  // angleFloor = 90 - min(36, smallestDomainAngle) / 2: no mesh of the domain has every angle
+  // below that, and one with every angle at most that exists (Bishop 2021).
+  double smallestDomainAngle = 360, angleFloor = 72;
   // When the target is not met: indices (into Mesh::triangles, triangle i = corners 3i..3i+2)
   // of the triangles that miss it, the first kMaxMissedListed of them.
   std::vector<uint32_t> missedTriangles;

@@ -1,0 +1,24 @@
+// The corners of the domain, and the floor they set for the largest angle of any mesh of it.
+// Bishop ("Optimal triangulation of polygons", 2021): no triangulation of a domain whose
+// smallest corner is theta has every angle below 90 - min(36, theta) / 2, and one with every
+// angle at most that exists. A corner is measured on the side where the triangles are: a
+// reflex notch of a letter is 300 degrees, not 60.
+#pragma once
+
+#include <algorithm>
+
+#include "triangulation.h"
+
+namespace acutemesh::detail {
+
+// The smallest corner of the domain (degrees) of T (T.inside marks it): at each vertex, the
+// angle of the domain between two consecutive walls (fixed edges, and edges between the
+// domain and the rest), summed over the domain's triangles there. 360 where no corner exists
+// (a vertex with one wall or none, an empty domain).
+double smallestDomainAngle(const Triangulation& T);
+
+// The floor for a largest angle: every mesh of a domain whose smallest corner is `corner`
+// degrees has an angle of at least this.
+inline double angleFloor(double corner) { return 90 - std::min(36.0, corner) / 2; }
+
+}  // namespace acutemesh::detail
