@@ -44,6 +44,7 @@ std::string missingValue(const std::string& a) {
   if (a == "--max-steiner") return "--max-steiner needs a count";
   if (a == "--threads") return "--threads needs a count";
   if (a == "--time-limit") return "--time-limit needs seconds";
+  if (a == "--max-angle") return "--max-angle needs a number or auto";
   return a + " needs a number";
 }
 
@@ -59,11 +60,17 @@ std::string readFormats(const std::string& v, Arguments& args) {
 }
 
 std::string readBound(const std::string& a, const std::string& v, Options& opt) {
+  if (a == "--max-angle" && v == "auto") {
+    opt.maxAngle = kAutoMaxAngle;
+    return {};
+  }
   char* end = nullptr;
   const double x = std::strtod(v.c_str(), &end);
+  if (a == "--max-angle" && (*end || v.empty()))
+    return "--max-angle needs a number or auto, not '" + v + "'";
   if (*end || v.empty() || !(x >= 0)) return a + " needs a number >= 0, not '" + v + "'";
   if (a == "--max-angle") {
-    if (!(x > 60 && x <= 90)) return "--max-angle must be above 60 and at most 90";
+    if (!(x > 60 && x <= 90)) return "--max-angle must be above 60 and at most 90, or auto";
     opt.maxAngle = x;
   } else if (a == "--min-angle") {
     if (!(x < 60)) return "--min-angle must be below 60";
@@ -173,6 +180,8 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
     }
   }
   if (args.input.empty()) return fail("no input file");
+  if (args.options.maxAngle == kAutoMaxAngle && args.options.mode != Mode::Acute)
+    return fail("--max-angle auto needs --mode acute");
   return c;
 }
 
@@ -237,7 +246,9 @@ std::string usageText() {
   addWrapped(s, "  --format LIST", "comma list of " + formats + " (default: " + defaultFormats + ")");
   if (!special.empty()) addWrapped(s, "", special);
   addChoices(s, "  --mode MODE", kModes, defaults.options.mode);
-  s += R"(  --max-angle DEG      acute mode's bound (exact at 90; 60 < DEG <= 90)
+  s += R"(  --max-angle DEG      acute: every angle below DEG (60 < DEG <= 90, default 90), certified
+                       exactly. auto: the lowest bound the run reaches, said on stderr. At or
+                       below the domain's floor (--stats: angleFloor): said, aims as auto, exit 1
   --min-angle DEG      smallest angle wanted (quality; also with acute / nonobtuse). Quality
                        terminates up to 40; above, it falls back to 40 if it wanders
   --max-area A         largest triangle area wanted (any refinement mode)

@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace acutemesh::cli {
@@ -23,6 +24,16 @@ std::string jsonString(const std::string& s) {
     }
   }
   return out + "\"";
+}
+
+// The shortest decimal that reads back as x: angleBound's tenths print as 84.3, not 84.299999999999997.
+std::string shortestNumber(double x) {
+  char text[32];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if (std::strtod(text, nullptr) == x) break;
+  }
+  return text;
 }
 
 // INPUT without its extension, plus ".1", unless -o says otherwise.
@@ -96,8 +107,8 @@ void printStats(const std::string& input, const Options& opt, const Result& r,
   std::printf(" \"targetMet\": %s, \"certified\": %s, \"smallestInputAngle\": %.17g,\n",
               s.targetMet ? "true" : "false", s.certified ? "true" : "false",
               s.smallestInputAngle);
-  std::printf(" \"smallestDomainAngle\": %.17g, \"angleFloor\": %.17g,\n", s.smallestDomainAngle,
-              s.angleFloor);
+  std::printf(" \"smallestDomainAngle\": %.17g, \"angleFloor\": %.17g, \"angleBound\": %s,\n",
+              s.smallestDomainAngle, s.angleFloor, shortestNumber(s.angleBound).c_str());
   // Triangles (indices into the written .ele / "triangles") that miss the target.
   std::printf(" \"missedTriangles\": [");
   for (size_t i = 0; i < s.missedTriangles.size(); ++i)

@@ -244,6 +244,17 @@ int triangleSigns(const double* const p[3], const RationalPoint* const at[3], in
   return orientSign(q[0], q[1], q[2]);
 }
 
+int cosineSquaredSign(const double* a, const double* b, const double* c, double q) {
+  // On the grid of 2^-s every coordinate is an integer, and q = Q 2^-t.
+  const int s = commonShift({a[0], a[1], b[0], b[1], c[0], c[1]}), t = commonShift({q});
+  const BigInt ax = BigInt::fromDouble(a[0], s), ay = BigInt::fromDouble(a[1], s);
+  const BigInt ux = BigInt::fromDouble(b[0], s) - ax, uy = BigInt::fromDouble(b[1], s) - ay;
+  const BigInt vx = BigInt::fromDouble(c[0], s) - ax, vy = BigInt::fromDouble(c[1], s) - ay;
+  const BigInt dot = ux * vx + uy * vy;
+  const BigInt lengths = (ux * ux + uy * uy) * (vx * vx + vy * vy);
+  return ((dot * dot).shifted(t) - BigInt::fromDouble(q, t) * lengths).sign();
+}
+
 std::string rationalText(const BigInt& numerator, const BigInt& denominator) {
   BigInt p = numerator, q = denominator;
   if (q.sign() < 0) p = -p, q = -q;

@@ -57,6 +57,10 @@ int dotSign(const RationalPoint& a, const RationalPoint& b, const RationalPoint&
 // The triangle p[0], p[1], p[2] (doubles) with corner k at at[k] instead where that is not
 // null: the sign of its orientation (returned) and of each corner's dot product (dots[k]).
 int triangleSigns(const double* const p[3], const RationalPoint* const at[3], int dots[3]);
+// For doubles a, b, c (b, c != a) and q >= 0, exactly: the sign of
+// ((b - a).(c - a))^2 - q |b - a|^2 |c - a|^2. With a positive dot product, > 0 says the angle
+// at a is below acos(sqrt(q)).
+int cosineSquaredSign(const double* a, const double* b, const double* c, double q);
 // "p/q" in lowest terms, or "p" when q is 1.
 std::string rationalText(const BigInt& numerator, const BigInt& denominator);
 // The reverse, for "p", "-p", "p/q" or "-p/q" (decimal digits, q > 0); false for anything else.

@@ -9,6 +9,7 @@
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
+#include "angle_bound.h"
 #include "build.h"
 #include "domain_angles.h"
 #include "portable_math.h"
@@ -194,29 +195,42 @@ double smallestInputAngle(const Pslg& in) {
   return smallest * (180.0 / M_PI);
 }
 
-// Reports the smallest input angle and says when it makes the target unreachable: corners
-// of that angle stay in the mesh, and they force an angle of at least 90 - angle / 2 nearby.
-void warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats) {
+// Reports the smallest input angle, and says when the domain's corners make a target
+// unreachable: a minimum angle above the smallest corner, or a maximum angle at or below the
+// floor (Stats::angleFloor). True for the latter: refinement then aims for the lowest bound
+// it can reach instead of spending the budget on the impossible.
+bool warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats) {
   using detail::degreesText;
   stats.smallestInputAngle = smallestInputAngle(input);
-  const std::string smallest = degreesText(stats.smallestInputAngle);
-  if (target.minAngle > stats.smallestInputAngle)
-    stats.warnings.push_back("the smallest input angle (" + smallest + ") is below the minimum "
+  const std::string corner = degreesText(stats.smallestDomainAngle);
+  if (target.minAngle > stats.smallestDomainAngle)
+    stats.warnings.push_back("the domain's smallest corner (" + corner + ") is below the minimum "
                              "angle asked for (" + degreesText(target.minAngle) +
                              "): triangles there cannot meet it");
-  double bound = 90 - stats.smallestInputAngle / 2;
-  if (target.mode == Mode::Acute && target.maxAngle < 90 && target.maxAngle <= bound)
-    stats.warnings.push_back("the smallest input angle (" + smallest + ") forces some angle of at "
-                             "least " + degreesText(bound) + ": a maximum angle of " +
-                             degreesText(target.maxAngle) + " cannot be met");
+  if (target.mode != Mode::Acute || target.maxAngle == kAutoMaxAngle ||
+      target.maxAngle > stats.angleFloor)
+    return false;
+  const std::string floor = degreesText(stats.angleFloor);
+  // Above 72 the floor is sharp (the corner's own triangles); at 72 it is Bishop's bound for
+  // every domain, below which some domains can go, but not by any plan acutemesh has.
+  stats.warnings.push_back(
+      stats.angleFloor > 72
+          ? "the domain's smallest corner (" + corner + ") sets a floor of " + floor +
+                ": no mesh has every angle below it; aiming for the lowest bound reachable "
+                "instead of " + degreesText(target.maxAngle)
+          : "a maximum angle of " + degreesText(target.maxAngle) + " is at or below the floor "
+                "of " + floor + " that every domain reaches (its smallest corner is " + corner +
+                "), and acutemesh does not aim below it; aiming for the lowest bound reachable "
+                "instead");
+  return true;
 }
 
 // The output triangles that miss the refinement target (the first kMaxMissedListed), for
-// Stats::missedTriangles: exact at 90 degrees (per output vertex, exactAt: the exact place of
-// the mesh's exact points, extractMesh's), floating point for other bounds.
+// Stats::missedTriangles: exact for angle bounds (per output vertex, exactAt: the exact place
+// of the mesh's exact points, extractMesh's), floating point for the minimum angle.
 void listMissedTriangles(const Options& options, const Mesh& mesh,
                          const std::vector<const detail::RationalPoint*>& exactAt, Stats& stats) {
-  const double cosMax = detail::portableCos(options.maxAngle * M_PI / 180);
+  const detail::AngleCheck below(options.maxAngle == kAutoMaxAngle ? 90 : options.maxAngle);
   const double cosMin = detail::portableCos(options.minAngle * M_PI / 180);
   stats.missedTriangles.clear();
   for (size_t t = 0; t < mesh.triangleCount() && stats.missedTriangles.size() < kMaxMissedListed; ++t) {
@@ -235,7 +249,7 @@ void listMissedTriangles(const Options& options, const Mesh& mesh,
       const int d = atExact ? dots[k] : sign(dot2d(a, b, c));
       double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
       double cosine = (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
-      if (options.mode == Mode::Acute) miss = d <= 0 || (options.maxAngle < 90 && cosine <= cosMax);
+      if (options.mode == Mode::Acute) miss = d <= 0 || !below.cornerBelow(a, b, c);
       if (options.mode == Mode::NonObtuse) miss = d < 0;
       if (options.minAngle > 0 && cosine > cosMin * (1 + 1e-12)) miss = true;
     }
@@ -244,14 +258,26 @@ void listMissedTriangles(const Options& options, const Mesh& mesh,
   }
 }
 
-// Whether the refined mesh meets the target: exactly (dot-product signs) at 90 degrees, in
-// floating point for other angle bounds.
-void certify(const Options& options, double largestArea,
+// Acute: the bound every angle of the mesh is certified below (Stats::angleBound).
+double certifiedAngleBound(const Options& options, const Mesh& mesh, const Stats& stats) {
+  if (stats.nonAcute > 0 || stats.triangles == 0) return 0;
+  if (options.maxAngle >= 90) return 90;  // the dot-product signs of nonAcute say so
+  if (options.maxAngle != kAutoMaxAngle && detail::meshBelow(mesh, detail::AngleCheck(options.maxAngle)))
+    return options.maxAngle;
+  return detail::tenthBound(mesh, stats.maxAngle);
+}
+
+// Whether the refined mesh meets the target, certified exactly for the angle bounds (acute:
+// every angle below Stats::angleBound; non-obtuse: none above 90), in floating point for the
+// minimum angle (to a relative 1e-9) and the area. `asked` is the maximum angle asked for,
+// `options.maxAngle` what was aimed at (kAutoMaxAngle for a bound below the floor).
+void certify(const Options& options, double asked, double largestArea,
              const std::vector<const detail::RationalPoint*>& exactAt, Stats& stats, Result& result) {
   bool met = true;
   if (options.mode == Mode::Acute) {
-    met = stats.nonAcute == 0 && (options.maxAngle >= 90 || stats.maxAngle < options.maxAngle);
-    stats.certified = stats.nonAcute == 0;
+    stats.angleBound = certifiedAngleBound(options, result.mesh, stats);
+    stats.certified = stats.angleBound > 0;
+    met = stats.certified && (asked == kAutoMaxAngle || stats.angleBound <= asked);
   } else if (options.mode == Mode::NonObtuse) {
     met = stats.obtuse == 0;
     stats.certified = met;
@@ -261,7 +287,11 @@ void certify(const Options& options, double largestArea,
   // An area bound counts too: a quality run stopped by its time limit has triangles above it.
   if (options.maxArea > 0 && largestArea > options.maxArea) met = false;
   stats.targetMet = met;
-  if (!met) listMissedTriangles(options, result.mesh, exactAt, stats);
+  if (!met) {
+    Options missed = options;
+    missed.maxAngle = asked;
+    listMissedTriangles(missed, result.mesh, exactAt, stats);
+  }
   if (!met && result.status == Status::Ok) {
     result.status = Status::TargetNotMet;
     uint32_t missing = options.mode == Mode::Acute       ? stats.nonAcute
@@ -270,6 +300,26 @@ void certify(const Options& options, double largestArea,
     result.message = missing ? std::to_string(missing) + " triangles still miss the target"
                              : "some triangles still miss the target";
   }
+  if (!met && stats.certified && result.status == Status::TargetNotMet)
+    result.message += "; every angle is below " + detail::degreesText(stats.angleBound) + " (certified)";
+}
+
+// The result of a run whose maximum angle was below the floor (warnAboutInputAngles): not met,
+// saying what was asked, the floor, and what the mesh reached.
+void reportBelowFloor(double asked, Result& result) {
+  using detail::degreesText;
+  Stats& stats = result.stats;
+  stats.targetMet = false;
+  if (result.status == Status::Cancelled) return;
+  std::string reached = stats.certified
+                            ? "the mesh has every angle below " + degreesText(stats.angleBound) +
+                                  " (certified)"
+                            : "the mesh is not acute" +
+                                  (result.message.empty() ? "" : " (" + result.message + ")");
+  result.status = Status::TargetNotMet;
+  result.message = "a maximum angle of " + degreesText(asked) + " is at or below the floor of " +
+                   degreesText(stats.angleFloor) + " set by the domain's smallest corner (" +
+                   degreesText(stats.smallestDomainAngle) + "); " + reached;
 }
 
 }  // namespace
@@ -339,8 +389,11 @@ namespace {
 // mesh() for coordinates within range of the predicates (see below).
 // An option out of range, or empty.
 std::string checkOptions(const Options& options) {
-  if (!(options.maxAngle >= 60 && options.maxAngle <= 180))
-    return "maxAngle must be between 60 and 180 degrees";
+  if (options.maxAngle == kAutoMaxAngle) {
+    if (options.mode != Mode::Acute) return "maxAngle auto needs mode acute";
+  } else if (!(options.maxAngle > 60 && options.maxAngle <= 90)) {
+    return "maxAngle must be above 60 and at most 90 degrees, or auto";
+  }
   if (!(options.minAngle >= 0 && options.minAngle < 60))
     return "minAngle must be at least 0 and below 60 degrees";
   if (!(options.maxArea >= 0) || !std::isfinite(options.maxArea))
@@ -431,13 +484,19 @@ Result meshInRange(const Pslg& input, const Options& options) {
     target.minAngle = kQualityDefaultMinAngle;
   std::vector<uint8_t> freeVertex;
   std::vector<detail::ExactVertex> exact;
+  bool belowFloor = false;
   if (refining) {
     T.inside = std::move(inside);
     T.inside.resize(T.tri.size() / 3, 0);
     stats.smallestDomainAngle = detail::smallestDomainAngle(T);
     stats.angleFloor = detail::angleFloor(stats.smallestDomainAngle);
-    warnAboutInputAngles(input, target, stats);
-    step = detail::refine(T, input, target, budget, freeVertex, exact);
+    belowFloor = warnAboutInputAngles(input, target, stats);
+    if (belowFloor) target.maxAngle = kAutoMaxAngle;
+    Options aim = target;
+    // refine() does not aim below 90 for kAutoMaxAngle yet (issue 23): until it does, such
+    // runs are meshed to 90, and the certificate finds the bound reached.
+    if (aim.maxAngle == kAutoMaxAngle) aim.maxAngle = 90;
+    step = detail::refine(T, input, aim, budget, freeVertex, exact);
     inside = std::move(T.inside);
     clock.end("refine");
     if (step.status == Status::Cancelled || step.status == Status::TargetNotMet) {
@@ -455,7 +514,8 @@ Result meshInRange(const Pslg& input, const Options& options) {
   if (stats.triangles == 0)
     stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
   double largestArea = measureAngles(T, inside, exact, stats);
-  if (refining) certify(target, largestArea, exactAt, stats, result);
+  if (refining) certify(target, options.maxAngle, largestArea, exactAt, stats, result);
+  if (belowFloor) reportBelowFloor(options.maxAngle, result);
   clock.end("output");
   stats.seconds = budget.elapsed();
   return result;

@@ -32,7 +32,7 @@ enum class Mode {
   Quality,    // refine until every angle >= minAngle and area <= maxArea (minAngle
               // kQualityDefaultMinAngle when neither is given)
   NonObtuse,  // refine until every angle <= 90 degrees (exact)
-  Acute,      // refine until every angle < maxAngle (default 90, exact at 90)
+  Acute,      // refine until every angle < maxAngle (default 90), certified exactly
 };
 
 // Which triangles of the constrained triangulation form the domain.
@@ -64,11 +64,19 @@ struct Progress {
 // Quality mode's minimum angle when neither minAngle nor maxArea is given (Triangle's -q).
 constexpr double kQualityDefaultMinAngle = 20.0;
 
+// Options::maxAngle for "the lowest bound the run can certify" (acute mode only; the CLI's
+// --max-angle auto). Stats::angleBound says what was reached.
+constexpr double kAutoMaxAngle = 0;
+
 struct Options {
   Mode mode = Mode::Cdt;
   FillRule fill = FillRule::Triangle;
   bool convexHull = false;        // keep every triangle of the convex hull (Triangle's -c)
-  double maxAngle = 90.0;         // degrees, acute mode: every angle < maxAngle
+  // Degrees, acute mode: every angle < maxAngle, 60 < maxAngle <= 90, or kAutoMaxAngle. A bound
+  // at or below the domain's floor (Stats::angleFloor) is run as kAutoMaxAngle, said in
+  // Stats::warnings, and ends TargetNotMet. Ignored by the other modes (kAutoMaxAngle there is
+  // BadInput).
+  double maxAngle = 90.0;
   double minAngle = 0.0;          // degrees, quality target (0 = none; see kQualityDefaultMinAngle)
   double maxArea = 0.0;           // area bound (0 = none)
   uint32_t maxSteiner = 0;        // Steiner point budget (0 = automatic: 50 per input vertex,
@@ -139,14 +147,25 @@ struct Stats {
   uint32_t nonAcute = 0;            // triangles with a corner >= 90 degrees (exact)
   uint32_t obtuse = 0;              // triangles with a corner > 90 degrees (exact)
   bool targetMet = true;            // refinement modes: every triangle meets the target
-  bool certified = false;           // acute / non-obtuse met, checked with exact dot products
-  // Smallest angle between two input segments at a vertex (degrees; 180 when no two segments
-  // meet). No mesh has all angles below 90 - smallestInputAngle / 2.
+  // Checked exactly, for the doubles of the mesh: acute, every angle < angleBound; non-obtuse,
+  // every angle <= 90.
+  bool certified = false;
+  // Acute: the bound every angle is certified strictly below (degrees): Options::maxAngle when
+  // the mesh meets it; otherwise (kAutoMaxAngle, or a bound not reached) the largest angle
+  // rounded up to the next tenth of a degree, at most 90. 0 when some angle is 90 or more, and
+  // in the other modes.
+  double angleBound = 0;
+  // Smallest angle between two input segments at a vertex, on either side of them (degrees;
+  // 180 when no two segments meet): outside the domain too. smallestDomainAngle is the one that
+  // limits meshes.
   double smallestInputAngle = 180;
   // The smallest corner of the domain (degrees), measured inside it (a reflex notch is over
-  // 180), between two input segments or the domain's edges; 360 when there is none. It sets
-  // angleFloor = 90 - min(36, smallestDomainAngle) / 2: no mesh of the domain has every angle
-  // below that, and one with every angle at most that exists (Bishop 2021).
+  // 180), between two input segments or the domain's edges; 360 when there is none. Refinement
+  // modes only. It sets angleFloor = 90 - min(36, smallestDomainAngle) / 2 (Bishop 2021: every
+  // domain has a mesh with every angle at most that). Above 72 it is sharp: a corner of theta
+  // forces an angle of at least 90 - theta / 2 in its triangles. At 72 (corners of 36 degrees
+  // or more) some domains need 72 and others less (an equilateral triangle: 60); acutemesh does
+  // not aim below it.
   double smallestDomainAngle = 360, angleFloor = 72;
   // When the target is not met: indices (into Mesh::triangles, triangle i = corners 3i..3i+2)
   // of the triangles that miss it, the first kMaxMissedListed of them.
