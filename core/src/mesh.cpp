@@ -207,8 +207,9 @@ bool warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats
     stats.warnings.push_back("the domain's smallest corner (" + corner + ") is below the minimum "
                              "angle asked for (" + degreesText(target.minAngle) +
                              "): triangles there cannot meet it");
+  // (The floor is measured in floating point: a bound within a hair of it counts as at it.)
   if (target.mode != Mode::Acute || target.maxAngle == kAutoMaxAngle ||
-      target.maxAngle > stats.angleFloor)
+      target.maxAngle > stats.angleFloor + 1e-9)
     return false;
   const std::string floor = degreesText(stats.angleFloor);
   // Above 72 the floor is sharp (the corner's own triangles); at 72 it is Bishop's bound for

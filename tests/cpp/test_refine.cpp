@@ -11,6 +11,7 @@
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
 #include "acutemesh/predicates.h"
+#include "build.h"
 #include "fixtures.h"
 
 using namespace acutemesh;
@@ -358,13 +359,15 @@ TEST(Refine, AreaBoundGetsTheBudgetItNeeds) {
   expectValid(square, o, r, "area bound");
 }
 
-// Acute meshes with a smaller maximum angle: reachable above the input's bound of
-// 90 - (smallest input angle) / 2, certified; below it, said so, and the result still ends acute.
-void expectMaxAngleBelowNinety(const std::string& path, double smallestInputAngle, double reachable,
+// Acute meshes with a smaller maximum angle: reachable above the floor of
+// 90 - min(36, the domain's smallest corner) / 2, certified; at or below it, said so, and the
+// result still ends acute and certified.
+void expectMaxAngleBelowNinety(const std::string& path, double smallestDomainAngle, double reachable,
                                double unreachable) {
   Pslg in = load(path);
-  ASSERT_GT(reachable, 90 - smallestInputAngle / 2);
-  ASSERT_LT(unreachable, 90 - smallestInputAngle / 2);
+  const double floor = 90 - std::min(36.0, smallestDomainAngle) / 2;
+  ASSERT_GT(reachable, floor);
+  ASSERT_LE(unreachable, floor);
   Options o;
   o.mode = Mode::Acute;
   o.maxAngle = reachable;
@@ -372,26 +375,33 @@ void expectMaxAngleBelowNinety(const std::string& path, double smallestInputAngl
   ASSERT_EQ(r.status, Status::Ok) << r.message;
   EXPECT_LT(r.stats.maxAngle, o.maxAngle);
   EXPECT_TRUE(r.stats.certified);
-  EXPECT_NEAR(r.stats.smallestInputAngle, smallestInputAngle, 0.01);
+  EXPECT_EQ(r.stats.angleBound, reachable);
+  EXPECT_NEAR(r.stats.smallestDomainAngle, smallestDomainAngle, 0.01);
+  EXPECT_NEAR(r.stats.angleFloor, floor, 0.01);
+  EXPECT_TRUE(r.stats.warnings.empty());
   expectValid(in, o, r, path + " reachable");
 
   o.maxAngle = unreachable;
   r = mesh(in, o);
   EXPECT_EQ(r.status, Status::TargetNotMet);
   ASSERT_FALSE(r.stats.warnings.empty());
-  EXPECT_NE(r.stats.warnings.back().find("cannot be met"), std::string::npos);
+  EXPECT_NE(r.stats.warnings.back().find("floor of " + detail::degreesText(r.stats.angleFloor)),
+            std::string::npos) << r.stats.warnings.back();
+  EXPECT_TRUE(r.stats.certified);
+  EXPECT_GT(r.stats.angleBound, r.stats.angleFloor);
   size_t nonAcute, obtuse;
   countCorners(r.mesh, &nonAcute, &obtuse);
   EXPECT_EQ(nonAcute, 0u);
   expectValid(in, o, r, path + " below the bound");
 }
 
-// The airfoil's trailing edge has 16.5 degrees: a bound of 81.8.
+// The airfoil's trailing edge, 16.5 degrees, is inside the airfoil, a hole: the domain's
+// corners are the far field's 90 (343.5 at the trailing edge), a floor of 72.
 TEST(Refine, MaxAngleBelowNinetyIsBestEffortAndStable) {
-  expectMaxAngleBelowNinety(kData + "/naca0012.poly", 16.49, 85, 80);
+  expectMaxAngleBelowNinety(kData + "/naca0012.poly", 90, 85, 70);
 }
 
-// Superior's smallest input angle is 12.2 degrees: a bound of 83.9.
+// Superior's smallest corner is 12.2 degrees: a floor of 83.9.
 TEST(Refine, MaxAngleBelowNinetyOnSuperior) {
   ACUTEMESH_NEED_REFERENCE_DATA();
   expectMaxAngleBelowNinety(reference::file("poly/superior.poly"), 12.2, 85, 80);
