@@ -310,6 +310,35 @@ check "policy: --no-exact-feet turns it off" \
 check "policy: no exact points" grep -qF '"exactPoints": 0,' "$work/out"
 check "did you mean" run 2 --mode non-obtuse "$work/A.poly"
 check "did you mean message" stderr_has "unknown mode 'non-obtuse' (delaunay, cdt, quality, nonobtuse, acute): did you mean 'nonobtuse'?"
+
+# --- the maximum angle: auto, bounds below 90, the floor ------------------------------------
+check "max angle auto" run 0 --mode acute --max-angle auto --stats --no-output "$work/A.poly"
+check "max angle auto says what it reached" stderr_has "acutemesh: every angle is below"
+check "max angle auto: a tenth in angleBound" grep -qE '"angleBound": (89\.[0-9]|90),' "$work/out"
+check "max angle auto: floor in stats" stdout_has '"smallestDomainAngle": 90, "angleFloor": 72,'
+for bad in autox 59 90.5 60 ''; do
+  check "bad max angle '$bad'" run 2 --mode acute --max-angle "$bad" "$work/A.poly"
+done
+check "bad max angle 'autox' message" run 2 --mode acute --max-angle autox "$work/A.poly"
+check "bad max angle 'autox' says" stderr_has "--max-angle needs a number or auto, not 'autox'"
+check "bad max angle 90.5 message" run 2 --mode acute --max-angle 90.5 "$work/A.poly"
+check "bad max angle 90.5 says" stderr_has "--max-angle must be above 60 and at most 90, or auto"
+check "max angle auto outside acute" run 2 --max-angle auto --mode nonobtuse "$work/A.poly"
+check "max angle auto outside acute says" stderr_has "--max-angle auto needs --mode acute"
+check "max angle 85" run 0 --mode acute --max-angle 85 --stats --no-output "$work/A.poly"
+check "max angle 85 certified" stdout_has '"certified": true'
+check "max angle 85 bound" stdout_has '"angleBound": 85,'
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/square.poly"
+check "min 30 max 80 on a square" run 0 --mode acute --min-angle 30 --max-angle 80 --stats --no-output "$work/square.poly"
+check "min 30 max 80: both met" stdout_has '"targetMet": true, "certified": true'
+check "min 30 max 80: bound" stdout_has '"angleBound": 80,'
+# A wedge with a 20-degree corner: a floor of 80, so 75 is said to be impossible at once.
+check "below the floor: exit 1" run 1 --mode acute --max-angle 75 --stats --no-output "$data/angles/wedge-20.poly"
+check "below the floor: warning" stderr_has "the domain's smallest corner (20 degrees) sets a floor of 80 degrees: no mesh has every angle below it"
+check "below the floor: message" stderr_has "acutemesh: a maximum angle of 75 degrees is at or below the floor of 80 degrees"
+check "below the floor: status" stdout_has '"status": "target-not-met"'
+check "below the floor: certified acute" stdout_has '"nonAcute": 0, "obtuse": 0'
+check "below the floor: certified" stdout_has '"targetMet": false, "certified": true'
 check "help lists cgshop" run 0 --help
 check "help text cgshop" stdout_has "cgshop: BASE.solution.json"
 
