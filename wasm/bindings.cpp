@@ -104,7 +104,8 @@ Options optionsFromJs(const val& o) {
   opt.convexHull = o["convexHull"].as<bool>();
   opt.exactSegments = o["exactSegments"].as<bool>();
   opt.exactFeet = o["exactFeet"].as<bool>();
-  opt.maxAngle = o["maxAngle"].as<double>();
+  // 'auto', or degrees the facade has checked.
+  opt.maxAngle = o["maxAngle"].isString() ? kAutoMaxAngle : o["maxAngle"].as<double>();
   opt.minAngle = o["minAngle"].as<double>();
   opt.maxArea = o["maxArea"].as<double>();
   opt.maxSteiner = o["maxSteiner"].as<uint32_t>();
@@ -131,6 +132,7 @@ val statsToJs(const Stats& s) {
   o.set("smallestInputAngle", s.smallestInputAngle);
   o.set("smallestDomainAngle", s.smallestDomainAngle);
   o.set("angleFloor", s.angleFloor);
+  o.set("angleBound", s.angleBound);
   val phases = val::object();
   for (const PhaseTime& p : s.phases) phases.set(p.phase, p.seconds);
   o.set("phases", phases);

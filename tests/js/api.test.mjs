@@ -233,6 +233,33 @@ test('parameters reach the core: maxArea, minAngle, maxAngle, convexHull, fill',
   const a80 = am.mesh(square, { mode: 'acute', maxAngle: 80 });
   assert.equal(a80.status, 'target-not-met');
   assert.ok(!a80.stats.targetMet && a80.stats.certified && a80.message.length > 0);
+  // 'auto': the lowest bound certified, a tenth of a degree, every angle below it.
+  const auto = am.mesh(square, { mode: 'acute', maxAngle: 'auto' });
+  assert.equal(auto.status, 'ok');
+  assert.equal(auto.options.maxAngle, 'auto');
+  assert.ok(auto.stats.certified && auto.stats.targetMet);
+  assert.ok(auto.stats.angleBound > auto.stats.maxAngle && auto.stats.angleBound <= 90, `${auto.stats.angleBound}`);
+  assert.equal(Math.round(auto.stats.angleBound * 10) / 10, auto.stats.angleBound);
+  for (let t = 0; t < auto.triangles.length / 3; ++t)
+    for (const c of cornerCosines(auto, t)) assert.ok(Math.acos(c) * 180 / Math.PI < auto.stats.angleBound);
+  assert.equal(a85.stats.angleBound, 85);
+  assert.equal(a85.stats.smallestDomainAngle, 90);
+  assert.equal(a85.stats.angleFloor, 72);
+  // Both a minimum and a maximum: both reach the core and both are reported.
+  const both = am.mesh(square, { mode: 'acute', minAngle: 30, maxAngle: 80 });
+  assert.equal(both.options.minAngle, 30);
+  assert.equal(both.options.maxAngle, 80);
+  assert.ok(both.stats.minAngle >= 30 * (1 - 1e-9), `min angle ${both.stats.minAngle}`);
+  assert.equal(both.stats.targetMet, both.stats.angleBound === 80);
+  // A 20-degree corner: a floor of 80, so 75 is said to be impossible and meshed as 'auto'.
+  const wedge = { points: [0, 0, 10, 0, 10 * Math.cos(Math.PI / 9), 10 * Math.sin(Math.PI / 9)], segments: [0, 1, 1, 2, 2, 0] };
+  const low = am.mesh(wedge, { mode: 'acute', maxAngle: 75 });
+  assert.equal(low.status, 'target-not-met');
+  assert.ok(Math.abs(low.stats.angleFloor - 80) < 1e-9);
+  assert.match(low.stats.warnings.join('\n'), /sets a floor of 80 degrees: no mesh has every angle below it/);
+  assert.match(low.message, /a maximum angle of 75 degrees is at or below the floor of 80 degrees/);
+  assert.ok(low.stats.certified && low.stats.angleBound > 80 && !low.stats.targetMet);
+  checkValid(wedge, low);
   const budget = am.mesh(square, { mode: 'acute', maxArea: 1e-4, maxSteiner: 10 });
   assert.equal(budget.status, 'target-not-met');
   checkValid(square, budget);

@@ -40,6 +40,11 @@ test('bad input: AcuteMeshError BAD_INPUT naming the item, and the module stays 
   rejects(() => am.mesh(square, { mode: 'obtuse' }), 'BAD_INPUT', /unknown mode 'obtuse' \(delaunay, cdt/);
   rejects(() => am.mesh(square, { fill: 'holes' }), 'BAD_INPUT', /unknown fill rule 'holes'/);
   rejects(() => am.mesh(square, { mode: 'acute', maxAngle: 50 }), 'BAD_INPUT', /maxAngle/);
+  for (const bad of ['autox', 59, 90.5, 60, 0, NaN, 'Auto'])
+    rejects(() => am.mesh(square, { mode: 'acute', maxAngle: bad }), 'BAD_INPUT',
+      /^maxAngle must be above 60 and at most 90 degrees, or 'auto', not /);
+  rejects(() => am.mesh(square, { mode: 'nonobtuse', maxAngle: 'auto' }), 'BAD_INPUT', /maxAngle auto needs mode acute/);
+  assert.throws(() => am.mesh(square, { mode: 'acute', maxAngle: true }), TypeError);
   rejects(() => am.mesh(square, { mode: 'quality', minAngle: 61 }), 'BAD_INPUT', /minAngle/);
   rejects(() => am.mesh(square, { maxSteiner: 1.5 }), 'BAD_INPUT', /maxSteiner/);
   rejects(() => am.mesh(square, { timeLimit: -1 }), 'BAD_INPUT', /timeLimit/);

@@ -184,6 +184,19 @@ function numberOption(options, key, fallback) {
   return v;
 }
 
+// 'auto' (the lowest bound the run can certify: acute mode only, which the core checks) or a
+// number of degrees, 60 < maxAngle <= 90. Checked here rather than by the core, whose 0 stands
+// for 'auto'.
+function maxAngleOption(options, fallback) {
+  const v = options.maxAngle;
+  if (v === undefined || v === 'auto') return v === undefined ? fallback : v;
+  if (typeof v !== 'number' && typeof v !== 'string')
+    throw new TypeError(`options.maxAngle must be a number or 'auto', not ${describe(v)}`);
+  if (!(typeof v === 'number' && v > 60 && v <= 90))
+    throw badInput(`maxAngle must be above 60 and at most 90 degrees, or 'auto', not ${typeof v === 'string' ? `'${v}'` : v}`);
+  return v;
+}
+
 // The options that describe the job, as names (what a mesh result carries, and what
 // validate() reads back); functions and signals are handled by mesh() itself. `core` holds the
 // names' checks and the defaults (makeApi); `input` is toPslg's result.
@@ -209,8 +222,8 @@ function toOptions(options, input, core) {
     convexHull: flag('convexHull'),
     exactSegments: flag('exactSegments'),
     exactFeet: flag('exactFeet'),
-    // The core checks the ranges of these three and names the option when one is wrong.
-    maxAngle: numberOption(options, 'maxAngle', defaults.maxAngle),
+    maxAngle: maxAngleOption(options, defaults.maxAngle),
+    // The core checks the ranges of these two and names the option when one is wrong.
     minAngle: numberOption(options, 'minAngle', defaults.minAngle),
     maxArea: numberOption(options, 'maxArea', defaults.maxArea),
     maxSteiner,

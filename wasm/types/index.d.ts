@@ -117,8 +117,13 @@ export interface MeshOptions {
    * instance unless given.
    */
   exactFeet?: boolean;
-  /** Degrees; acute mode: every angle < maxAngle (60 < maxAngle <= 90; default 90, exact). */
-  maxAngle?: number;
+  /**
+   * Degrees; acute mode: every angle < maxAngle, 60 < maxAngle <= 90 (default 90), certified
+   * exactly. 'auto': the lowest bound the run can certify (acute mode only), said in
+   * stats.angleBound. A bound at or below the domain's floor (stats.angleFloor) is said in
+   * stats.warnings and meshed as 'auto', status 'target-not-met'. Other modes ignore a number.
+   */
+  maxAngle?: number | 'auto';
   /** Degrees; smallest angle wanted (quality mode: 20 when neither minAngle nor maxArea is given; 0 <= minAngle < 60; terminates up to 40, and above 40 a run that wanders is meshed to 40 instead, status 'target-not-met'). */
   minAngle?: number;
   /** Largest triangle area wanted (0: none). */
@@ -144,7 +149,7 @@ export interface ResolvedOptions {
   convexHull: boolean;
   exactSegments: boolean;
   exactFeet: boolean;
-  maxAngle: number;
+  maxAngle: number | 'auto';
   minAngle: number;
   maxArea: number;
   maxSteiner: number;
@@ -171,10 +176,33 @@ export interface MeshStats {
   obtuse: number;
   /** Refinement modes: every triangle meets the target. */
   targetMet: boolean;
-  /** Acute / non-obtuse target met, checked with exact dot products. */
+  /**
+   * Checked exactly for the mesh's doubles: acute, every angle < angleBound; non-obtuse, every
+   * angle <= 90.
+   */
   certified: boolean;
-  /** Smallest angle between two input segments (degrees; 180 when none meet). */
+  /**
+   * Acute: the bound every angle is certified strictly below (degrees): maxAngle when the mesh
+   * meets it; otherwise ('auto', or a bound not reached) the largest angle rounded up to the
+   * next tenth of a degree, at most 90. 0 when some angle is 90 or more, and in other modes.
+   */
+  angleBound: number;
+  /**
+   * Smallest angle between two input segments on either side of them, outside the domain too
+   * (degrees; 180 when none meet). smallestDomainAngle is the one that limits meshes.
+   */
   smallestInputAngle: number;
+  /**
+   * The domain's smallest corner, measured inside it (degrees; a reflex corner is over 180; 360
+   * when there is none). Refinement modes only.
+   */
+  smallestDomainAngle: number;
+  /**
+   * 90 - min(36, smallestDomainAngle) / 2: the lowest maximum angle acutemesh aims for. Above 72
+   * no mesh of the domain has every angle below it; every domain has one with every angle at
+   * most it (Bishop 2021).
+   */
+  angleFloor: number;
   /** Wall time per phase, seconds. */
   phases: Record<string, number>;
   /** Wall time of the whole call, seconds. */

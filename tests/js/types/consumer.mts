@@ -16,6 +16,9 @@ export async function use(text: string): Promise<number> {
     onProgress: ({ phase, fraction, vertices }) => void [phase.length, fraction + vertices],
   });
   const stats: MeshStats = m.stats;
+  const auto = am.mesh(pslg, { mode: 'acute', maxAngle: 'auto' });
+  const reached: number = auto.stats.angleBound + auto.stats.angleFloor + auto.stats.smallestDomainAngle;
+  const asked: number | 'auto' = auto.options.maxAngle;
   const ok: boolean = am.validate(pslg, m).ok && stats.certified && m.status === 'ok';
   const files: string[] = [am.toNode(m), am.toEle(m), am.toPoly(m), am.toOBJ(m), am.toSVG(m), am.toJSON(m), am.toOFF(m)];
   const x: number = m.points[0] + m.triangles[0] + m.segments.length + m.vertexKind.length;
@@ -44,7 +47,7 @@ export async function use(text: string): Promise<number> {
   const w: MeshResult = await worker.mesh(pslg, { mode: 'nonobtuse', signal: controller.signal, onProgress: (p) => void p.phase });
   worker.terminate();
   const shared = await meshInWorker(rings, { mode: 'quality', minAngle: 30 });
-  void [ok, files, x, heapSize, allocated, other, single, w, shared];
+  void [ok, files, x, heapSize, allocated, other, single, w, shared, reached, asked];
 
   // @ts-expect-error: not a mode
   am.mesh(pslg, { mode: 'obtuse' });
@@ -54,6 +57,8 @@ export async function use(text: string): Promise<number> {
   am.mesh({ segments: [0, 1] });
   // @ts-expect-error: maxArea is a number
   am.mesh(pslg, { maxArea: '1' });
+  // @ts-expect-error: maxAngle is a number or 'auto'
+  am.mesh(pslg, { maxAngle: 'lowest' });
   // @ts-expect-error: status is 'ok' | 'target-not-met'
   const bad: MeshResult['status'] = 'failed';
   // @ts-expect-error: the result's arrays are typed arrays
