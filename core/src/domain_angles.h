@@ -1,8 +1,9 @@
 // The corners of the domain, and the floor they set for the largest angle of any mesh of it.
-// Bishop ("Optimal triangulation of polygons", 2021): no triangulation of a domain whose
-// smallest corner is theta has every angle below 90 - min(36, theta) / 2, and one with every
-// angle at most that exists. A corner is measured on the side where the triangles are: a
-// reflex notch of a letter is 300 degrees, not 60.
+// Bishop ("Optimal triangulation of polygons", 2021): a domain whose smallest corner is theta
+// has a triangulation with every angle at most 90 - min(36, theta) / 2. For theta < 36 none
+// has every angle below that (the corner's own triangles); for theta >= 36 the floor is 72,
+// which some domains need and others (an equilateral triangle) do not. A corner is measured on
+// the side where the triangles are: a reflex notch of a letter is 300 degrees, not 60.
 #pragma once
 
 #include <algorithm>
@@ -17,8 +18,8 @@ namespace acutemesh::detail {
 // (a vertex with one wall or none, an empty domain).
 double smallestDomainAngle(const Triangulation& T);
 
-// The floor for a largest angle: every mesh of a domain whose smallest corner is `corner`
-// degrees has an angle of at least this.
+// The floor for a largest angle, for a domain whose smallest corner is `corner` degrees: above
+// 72, every mesh of it has an angle of at least this.
 inline double angleFloor(double corner) { return 90 - std::min(36.0, corner) / 2; }
 
 }  // namespace acutemesh::detail
