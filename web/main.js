@@ -399,7 +399,7 @@ function renderStats(r) {
   ];
   if (r.mode === 'acute') {
     const target = r.askedMaxAngle === AUTO ? 'auto' : `${r.askedMaxAngle}°`;
-    rows.push(['Bound', r.targetMet ? (r.angleBound != null ? `< ${r.angleBound}°` : target) : `${target} not met`]);
+    rows.push(['Bound', r.targetMet ? (r.angleBound != null ? `< ${r.angleBound}°` : target) : 'not met']);
   }
   rows.push(['Floor', `${Number(r.angleFloor.toFixed(2))}°`]);
   ui.stats.replaceChildren(...rows.flatMap(([k, v]) => {
