@@ -65,11 +65,12 @@ export function measureFloor(am, pslg) {
   }
 }
 
-// Whether this mesher takes maxAngle 'auto': a mesh of one equilateral triangle with it.
+// Whether this mesher takes maxAngle 'auto': its options check, on a triangulation of one
+// triangle (constrained Delaunay, so no refinement runs on the page's thread).
 export function acceptsAuto(am) {
   const triangle = { points: new Float64Array([0, 0, 2, 0, 1, Math.sqrt(3)]), segments: new Uint32Array(0), holes: new Float64Array(0) };
   try {
-    am.mesh(triangle, { mode: 'acute', maxAngle: AUTO });
+    am.mesh(triangle, { mode: 'cdt', maxAngle: AUTO });
     return true;
   } catch {
     return false;

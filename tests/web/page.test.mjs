@@ -515,7 +515,7 @@ test('max angle auto: sent as \'auto\' when the mesher takes it, and the bound r
   let takesAuto = true;
   try {
     am.mesh({ points: new Float64Array([0, 0, 2, 0, 1, 1.7]), segments: new Uint32Array(0), holes: new Float64Array(0) },
-      { mode: 'acute', maxAngle: 'auto' });
+      { mode: 'cdt', maxAngle: 'auto' });
   } catch {
     takesAuto = false;
   }
