@@ -24,9 +24,10 @@ const DEG = 180 / Math.PI;
 // cls: Uint8Array(T) class index per triangle, counts per class }.
 // `bound` is the mesher's exact verdict, when it certified one: 'acute' (every corner's dot
 // product > 0) or 'nonobtuse' (>= 0). Floating point can put a corner a hair on the wrong side
-// of 90; with a bound, such angles are clamped to it.
+// of 90; with a bound, such angles are clamped to it. `below`: a bound under 90 that every
+// angle is certified below (acute mode's max angle), clamped to the same way.
 const BELOW_90 = 90 - 1e-9;
-export function analyse(points, triangles, bound = null) {
+export function analyse(points, triangles, bound = null, below = null) {
   const T = triangles.length / 3;
   const angles = new Float64Array(3 * T);
   const cls = new Uint8Array(T);
@@ -41,7 +42,7 @@ export function analyse(points, triangles, bound = null) {
     const da = -(abx * cax + aby * cay), db = -(bcx * abx + bcy * aby), dc = -(cax * bcx + cay * bcy);
     let A = Math.atan2(cross, da) * DEG, B = Math.atan2(cross, db) * DEG, C = Math.atan2(cross, dc) * DEG;
     if (bound) {
-      const cap = bound === 'acute' ? BELOW_90 : 90;
+      const cap = bound === 'acute' ? Math.min(BELOW_90, (below ?? 90) - 1e-9) : 90;
       A = Math.min(A, cap); B = Math.min(B, cap); C = Math.min(C, cap);
     }
     angles[3 * t] = A; angles[3 * t + 1] = B; angles[3 * t + 2] = C;

@@ -8,6 +8,7 @@ import { loadEngine, meshInWorker, warmUp } from './engine.js';
 import { MeshView } from './view.js';
 import { analyse, CLASSES } from './angles.js';
 import { drawHistogram } from './histogram.js';
+import { AUTO, acceptsAuto, angleFloor, boundSentence, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
 import { DrawTool, encodeRings, decodeRings } from './draw.js';
 import { parseFont, textToRings, fontName } from './loaders/font.js';
 import { loadFile } from './loaders/index.js';
@@ -16,7 +17,7 @@ const $ = (id) => document.getElementById(id);
 const ui = {
   text: $('text'), font: $('font'), tolerance: $('tolerance'), sample: $('sample'), file: $('file'),
   draw: $('draw'), drawClose: $('draw-close'), drawClear: $('draw-clear'), source: $('source'),
-  mode: $('mode'), maxAngle: $('maxAngle'), minAngle: $('minAngle'), maxArea: $('maxArea'),
+  mode: $('mode'), maxAngle: $('maxAngle'), maxAngleAuto: $('maxAngleAuto'), angleFloor: $('angleFloor'), minAngle: $('minAngle'), maxArea: $('maxArea'),
   maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
   status: $('status'), stats: $('stats'), histogram: $('histogram'), legend: $('legend'),
   view: $('view'), fit: $('fit'), showEdges: $('show-edges'), showSteiner: $('show-steiner'),
@@ -46,6 +47,8 @@ let lastMeshedKey = null;     // to fit the view only when the input itself chan
 let running = null;           // AbortController of the run in progress
 let runs = 0;
 let vocabulary = null;        // the mesher's names and defaults, once it has loaded
+let autoAccepted = false;     // whether the mesher takes maxAngle 'auto' (probed on load)
+let floorInfo = null;         // the current input's { corner, floor, from: 'input' | 'run' }
 warmUp();
 const enginePromise = loadEngine();
 enginePromise.then(takeVocabulary, (e) => setStatus(`Could not load the mesher: ${e.message}`, 'error'));
@@ -125,6 +128,11 @@ async function preview() {
     view.fit();
     const n = input.pslg ? input.pslg.points.length / 2 : input.rings.reduce((s, r) => s + r.length, 0);
     showSource(`${input.note || input.label}: ${n} input vertices. Press Mesh.`);
+    const am = await enginePromise.catch(() => null);
+    if (am) {
+      floorInfo = measureFloor(am, input.pslg || am.fromRings(input.rings, { fill: input.fill }));
+      showFloor();
+    }
     setStatus('');
   } catch (e) {
     setStatus(e.message, 'error');
@@ -175,7 +183,8 @@ async function takeSample(name) {
 function meshOptions() {
   const num = (el) => Number(el.value) || 0;
   const o = { mode: ui.mode.value };
-  if (o.mode === 'acute' && num(ui.maxAngle) > 0) o.maxAngle = num(ui.maxAngle);
+  if (o.mode === 'acute' && autoChosen()) o.maxAngle = AUTO;
+  else if (o.mode === 'acute' && num(ui.maxAngle) > 0) o.maxAngle = num(ui.maxAngle);
   if (o.mode !== 'cdt') {
     if (num(ui.minAngle) > 0) o.minAngle = num(ui.minAngle);
     if (num(ui.maxArea) > 0) o.maxArea = num(ui.maxArea);
@@ -184,9 +193,18 @@ function meshOptions() {
   return o;
 }
 
+// 'auto' goes to the mesher only when it takes it (acceptsAuto, probed once it has loaded).
+function autoChosen() {
+  return autoAccepted && ui.maxAngleAuto.checked;
+}
+
 function syncOptionInputs() {
   const m = ui.mode.value;
-  ui.maxAngle.disabled = m !== 'acute';
+  ui.maxAngle.disabled = m !== 'acute' || autoChosen();
+  ui.maxAngleAuto.disabled = m !== 'acute' || !autoAccepted;
+  ui.maxAngleAuto.parentElement.title = autoAccepted || !vocabulary
+    ? 'The lowest bound the run can certify' : 'This build of the mesher does not offer "auto" yet';
+  showFloor();
   for (const el of [ui.minAngle, ui.maxArea, ui.maxSteiner]) el.disabled = m === 'cdt';
   // An empty input means the mesher's default, which the placeholder shows.
   if (!vocabulary) return;
@@ -198,11 +216,31 @@ function syncOptionInputs() {
   ui.maxSteiner.placeholder = String(d.maxSteiner);
 }
 
+// The floor beside the dial: no mesh of the current input has every angle below it. A bound
+// asked for below it is said at once, before any run.
+function showFloor() {
+  const el = ui.angleFloor;
+  el.dataset.floor = floorInfo ? String(floorInfo.floor) : '';
+  el.dataset.from = floorInfo ? floorInfo.from : '';
+  const asked = Number(ui.maxAngle.value);
+  const below = floorInfo && ui.mode.value === 'acute' && !autoChosen() && asked > 0 && asked < floorInfo.floor;
+  el.className = `hint floor${below ? ' warn' : ''}`;
+  if (!floorInfo) {
+    el.textContent = '';
+    return;
+  }
+  const { corner, floor } = floorInfo;
+  const cornerText = corner < 360 ? `smallest corner ${Number(corner.toFixed(2))}°` : 'no corner';
+  el.textContent = `floor ${Number(floor.toFixed(2))}° (${cornerText})${below ? `: ${asked}° cannot be met` : ''}`;
+}
+
 // The mesher's vocabulary: its descriptions of the modes, its output formats as download
 // buttons, its defaults as the placeholders of empty inputs.
 function takeVocabulary(am) {
   if (vocabulary) return;
   vocabulary = am.vocabulary;
+  autoAccepted = acceptsAuto(am);
+  if (!autoAccepted) ui.maxAngleAuto.checked = false;
   for (const option of ui.mode.options) {
     const mode = vocabulary.modes.find((e) => e.name === option.value);
     if (mode) option.title = mode.description;
@@ -270,13 +308,26 @@ function show(am, pslg, input, options, m, wallMs) {
   // Colours and bars follow the exact verdict: a certified acute mesh's corners at 89.9999
   // degrees may compute as 90 in floating point, and must not be painted as right or obtuse.
   const bound = s.certified ? (options.mode === 'acute' ? 'acute' : options.mode === 'nonobtuse' ? 'nonobtuse' : null) : null;
-  const a = analyse(m.points, m.triangles, bound);
+  const below = certifiedBound(s, options);
+  const a = analyse(m.points, m.triangles, bound, below);
+  // The floor: the mesher's when it measured one (the refinement modes), else measured here.
+  const corner = s.smallestDomainAngle < 360 ? s.smallestDomainAngle : smallestDomainCorner(m.points, m.triangles, m.segments);
+  floorInfo = { corner, floor: Number.isFinite(s.angleFloor) && s.smallestDomainAngle < 360 ? s.angleFloor : angleFloor(corner), from: 'run' };
+  showFloor();
   view.setMesh(m, a.cls, nInput);
   draw.hide();
   if (input.key !== lastMeshedKey) view.fit();
   lastMeshedKey = input.key;
-  lastResult = { am, mesh: m, label: input.label, angles: a.angles };
-  drawHistogram(ui.histogram, a.angles);
+  // The histogram marks the bound (angles above it are the misses), the floor and the largest
+  // angle: the bound asked for, or what auto reached.
+  const asked = options.mode === 'acute' ? options.maxAngle ?? vocabulary?.defaults.maxAngle ?? 90 : null;
+  const marks = {
+    bound: typeof asked === 'number' ? asked : below,
+    floor: options.mode === 'acute' ? floorInfo.floor : null,
+    max: finite(s.maxAngle),
+  };
+  lastResult = { am, mesh: m, label: input.label, angles: a.angles, marks };
+  drawHistogram(ui.histogram, a.angles, marks);
   const result = {
     triangles: m.triangles.length / 3,
     vertices: s.vertices ?? m.points.length / 2,
@@ -287,6 +338,10 @@ function show(am, pslg, input, options, m, wallMs) {
     milliseconds: round(Number.isFinite(s.seconds) ? s.seconds * 1000 : wallMs, 1),
     mode: options.mode,
     targetMet: s.targetMet ?? true,
+    askedMaxAngle: asked,
+    angleBound: below,
+    angleFloor: floorInfo.floor,
+    smallestDomainAngle: floorInfo.corner,
     inputVertices: nInput,
     wallMilliseconds: round(wallMs, 1),
     options,  // as the page asked for them
@@ -302,8 +357,10 @@ function show(am, pslg, input, options, m, wallMs) {
     : options.mode === 'quality'
       ? (result.targetMet ? 'quality target met' : `quality target not met${m.message ? ` (${m.message})` : ''}`)
       : 'constrained Delaunay';
-  setStatus(`Done in ${Math.round(wallMs)} ms: ${verdict}.${warnings}`,
-    (options.mode === 'acute' || options.mode === 'nonobtuse') && !result.certified ? 'warn' : '');
+  const sentence = boundSentence(result);
+  setStatus(`Done in ${Math.round(wallMs)} ms: ${verdict}.${sentence ? ` ${sentence}` : ''}${warnings}`,
+    ((options.mode === 'acute' || options.mode === 'nonobtuse') && !result.certified) ||
+    (options.mode === 'acute' && !result.targetMet) ? 'warn' : '');
   // The first mesh on screen: when the frame that draws it has run.
   if (runs === 1) {
     requestAnimationFrame(() => {
@@ -333,18 +390,25 @@ function renderStats(r) {
     ['Steiner', r.steiner.toLocaleString('en')],
     ['Input', r.inputVertices.toLocaleString('en')],
     ['Min angle', r.minAngle == null ? '–' : `${truncate(r.minAngle, 2)}°`],
-    ['Max angle', r.maxAngle == null ? '–' : r.certified && r.mode === 'acute' && r.maxAngle >= 89.99995
-      ? '< 90°' : `${truncate(r.maxAngle, 4)}°`],
+    // Below a certified bound the float angle may round up to it: say "< bound" there.
+    ['Max angle', r.maxAngle == null ? '–' : r.angleBound != null && r.maxAngle >= r.angleBound - 5e-5
+      ? `< ${r.angleBound}°` : `${truncate(r.maxAngle, 4)}°`],
     // Certification is of acuteness / non-obtuseness: it does not apply to the other modes.
     ['Certified', r.mode === 'acute' || r.mode === 'nonobtuse' ? (r.certified ? 'yes' : 'no') : 'n/a'],
     ['Time', `${r.milliseconds} ms`],
   ];
+  if (r.mode === 'acute') {
+    const target = r.askedMaxAngle === AUTO ? 'auto' : `${r.askedMaxAngle}°`;
+    rows.push(['Bound', r.targetMet ? (r.angleBound != null ? `< ${r.angleBound}°` : target) : 'not met']);
+  }
+  rows.push(['Floor', `${Number(r.angleFloor.toFixed(2))}°`]);
   ui.stats.replaceChildren(...rows.flatMap(([k, v]) => {
     const dt = document.createElement('dt');
     const dd = document.createElement('dd');
     dt.textContent = k;
     dd.textContent = v;
     if (k === 'Certified' && v !== 'n/a') dd.className = r.certified ? 'yes' : 'no';
+    if (k === 'Bound') dd.className = r.targetMet ? 'yes' : 'no';
     return [dt, dd];
   }));
 }
@@ -394,7 +458,7 @@ function download(format) {
 function saveUrl() {
   const p = new URLSearchParams();
   for (const [k, d] of Object.entries(OPTION_DEFAULTS)) {
-    const v = ui[k].value;
+    const v = k === 'maxAngle' && ui.maxAngleAuto.checked ? AUTO : ui[k].value;
     if (v !== d && v !== '') p.set(k, v);
   }
   if (ui.tolerance.value !== TEXT_DEFAULTS.tol) p.set('tol', ui.tolerance.value);
@@ -413,6 +477,11 @@ function saveUrl() {
 function loadUrl() {
   const p = new URLSearchParams(location.search);
   for (const k of Object.keys(OPTION_DEFAULTS)) if (p.has(k)) ui[k].value = p.get(k);
+  // maxAngle=auto ticks the box (left as is when this mesher turns out not to take 'auto').
+  if (p.get('maxAngle') === AUTO) {
+    ui.maxAngleAuto.checked = true;
+    ui.maxAngle.value = OPTION_DEFAULTS.maxAngle;
+  }
   if (![...ui.mode.options].some((o) => o.value === ui.mode.value)) ui.mode.value = 'acute';
   if (p.has('tol')) ui.tolerance.value = p.get('tol');
   if (p.has('text')) ui.text.value = p.get('text');
@@ -457,7 +526,7 @@ function wire() {
     if (!ui.sample.value) return;
     try { await takeFile(await takeSample(ui.sample.value), 'sample'); } catch (e) { setStatus(e.message, 'error'); }
   });
-  for (const el of [ui.mode, ui.maxAngle, ui.minAngle, ui.maxArea, ui.maxSteiner]) {
+  for (const el of [ui.mode, ui.maxAngle, ui.maxAngleAuto, ui.minAngle, ui.maxArea, ui.maxSteiner]) {
     el.addEventListener('change', () => { syncOptionInputs(); saveUrl(); });
   }
   ui.draw.addEventListener('click', toggleDraw);
@@ -479,7 +548,7 @@ function wire() {
     const f = e.dataTransfer && e.dataTransfer.files[0];
     if (f) takeFile(f);
   });
-  window.addEventListener('resize', () => drawHistogram(ui.histogram, lastResult && lastResult.angles));
+  window.addEventListener('resize', () => drawHistogram(ui.histogram, lastResult && lastResult.angles, lastResult && lastResult.marks));
 }
 
 async function start() {

@@ -419,3 +419,123 @@ test('a 100,000-triangle mesh pans and zooms smoothly', async () => {
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+// --- the max-angle dial (acute mode) ------------------------------------------------------------
+
+const histogramMarks = (page) => page.$eval('[data-testid=histogram]', (c) => ({ ...c.dataset }));
+
+test('max angle: the control sets the run\'s bound, the histogram marks it, the URL keeps it', async () => {
+  const { page, errors, context } = await open('?text=Hi&maxAngle=85');
+  const r = await result(page);
+  assert.deepEqual(r.options, { mode: 'acute', maxAngle: 85 });
+  assert.equal(r.targetMet, true, `85 is met on "Hi" (${JSON.stringify(r)})`);
+  assert.equal(r.angleBound, 85);
+  assert.ok(r.maxAngle < 85 + 1e-9, `max angle ${r.maxAngle}`);
+  assert.match(await page.textContent('#status'), /Every angle below 85°/);
+  let h = await histogramMarks(page);
+  assert.equal(h.bound, '85');
+  assert.equal(h.over, '0', 'a met bound leaves no angle at or above it');
+  assert.equal(Number(h.max), r.maxAngle);
+  // Turned to 88 on the page: the next run asks for 88, and so does the link.
+  await page.fill('[data-testid=max-angle]', '88');
+  await page.dispatchEvent('[data-testid=max-angle]', 'change');
+  assert.match(page.url(), /maxAngle=88/);
+  const s = await runAndWait(page);
+  assert.deepEqual(s.options, { mode: 'acute', maxAngle: 88 });
+  assert.equal(s.angleBound, s.targetMet ? 88 : 90);
+  h = await histogramMarks(page);
+  assert.equal(h.bound, '88');
+  assert.equal(Number(h.over) === 0, s.targetMet, 'red (over the bound) exactly when the bound was missed');
+  // Outside acute mode the dial is off and nothing is sent.
+  await page.selectOption('[data-testid=mode-select]', 'nonobtuse');
+  assert.equal(await page.isDisabled('[data-testid=max-angle]'), true);
+  assert.deepEqual((await runAndWait(page)).options, { mode: 'nonobtuse' });
+  assert.equal((await histogramMarks(page)).bound, '');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('max angle: the input\'s floor shows beside the dial before a run, as the mesher measures it', async () => {
+  const dir = mkdtempSync(join(tmpdir(), 'acutemesh-web-'));
+  // A wedge with a 20-degree corner: floor 90 - 20/2 = 80.
+  const t = (20 * Math.PI) / 180;
+  const wedge = join(dir, 'wedge.poly');
+  writeFileSync(wedge, `3 2 0 0\n1 0 0\n2 10 0\n3 ${10 * Math.cos(t)} ${10 * Math.sin(t)}\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n`);
+  const { page, errors, context } = await open('?text=Hi');
+  await upload(page, join(root, 'tests', 'data', 'A.poly'));
+  // Inside A.poly the smallest corner is 90 (the apex's 45 degrees is outside): floor 72.
+  await page.waitForFunction(() => document.getElementById('angleFloor').dataset.from === 'input');
+  assert.match(await page.textContent('[data-testid=angle-floor]'), /^floor 72° \(smallest corner 90°\)/);
+  await upload(page, wedge);
+  await page.waitForFunction(() => /smallest corner 20°/.test(document.getElementById('angleFloor').textContent));
+  const shown = Number(await page.getAttribute('[data-testid=angle-floor]', 'data-floor'));
+  assert.ok(Math.abs(shown - 80) < 1e-9, `floor ${shown}`);
+  // Asking for less than the floor is said at once, beside the dial.
+  await page.fill('[data-testid=max-angle]', '75');
+  await page.dispatchEvent('[data-testid=max-angle]', 'change');
+  assert.match(await page.textContent('[data-testid=angle-floor]'), /75° cannot be met/);
+  assert.equal(await page.getAttribute('[data-testid=angle-floor]', 'class'), 'hint floor warn');
+  const r = await runAndWait(page);
+  assert.ok(Math.abs(r.angleFloor - shown) < 1e-9, `the page measured ${shown}, the mesher ${r.angleFloor}`);
+  assert.equal(await page.getAttribute('[data-testid=angle-floor]', 'data-from'), 'run');
+  assert.equal((await histogramMarks(page)).floor, String(r.angleFloor));
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('max angle: a bound that was not met is said in words, with what was reached', async () => {
+  // "Hi" in Pagella: its corners allow no better than 72, so 65 cannot be met by any mesher.
+  const { page, errors, context } = await open('?text=Hi&maxAngle=65');
+  const r = await result(page);
+  assert.equal(r.options.maxAngle, 65);
+  assert.ok(r.angleFloor > 65, `floor ${r.angleFloor}`);
+  assert.equal(r.targetMet, false);
+  const status = await page.textContent('#status');
+  const reached = /The bound of 65° was not met, below what the input allows: the largest angle is (\d+\.\d{3})°/.exec(status);
+  assert.ok(reached, `status: ${status}`);
+  assert.equal(Number(reached[1]), Math.trunc(r.maxAngle * 1000) / 1000);
+  assert.match(status, new RegExp(`this input's floor: ${Number(r.angleFloor.toFixed(1))}°`));
+  assert.equal(await page.getAttribute('#status', 'class'), 'status warn');
+  const bound = await page.$$eval('#stats dt', (dts) => {
+    const dt = dts.find((d) => d.textContent === 'Bound');
+    return dt && [dt.nextElementSibling.textContent, dt.nextElementSibling.className];
+  });
+  assert.deepEqual(bound, ['not met', 'no']);
+  // The histogram draws the angles at or above the bound in red: here every triangle's largest.
+  const h = await histogramMarks(page);
+  assert.equal(h.bound, '65');
+  assert.ok(Number(h.over) >= r.triangles, `${h.over} angles marked over the bound, ${r.triangles} triangles`);
+  await page.$eval('section[aria-labelledby=h-result]', (s) => s.scrollIntoView());
+  await shot(page, 'max-angle-missed');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('max angle auto: sent as \'auto\' when the mesher takes it, and the bound reached is shown', async () => {
+  let takesAuto = true;
+  try {
+    am.mesh({ points: new Float64Array([0, 0, 2, 0, 1, 1.7]), segments: new Uint32Array(0), holes: new Float64Array(0) },
+      { mode: 'cdt', maxAngle: 'auto' });
+  } catch {
+    takesAuto = false;
+  }
+  const { page, errors, context } = await open('?text=Hi&maxAngle=auto', { width: 390, height: 844 });
+  const r = await result(page);
+  assert.equal(await page.isDisabled('[data-testid=max-angle-auto]'), !takesAuto);
+  assert.equal(await page.isChecked('[data-testid=max-angle-auto]'), takesAuto);
+  if (takesAuto) {
+    assert.deepEqual(r.options, { mode: 'acute', maxAngle: 'auto' });
+    assert.equal(await page.isDisabled('[data-testid=max-angle]'), true, 'auto leaves no number to set');
+    assert.ok(r.certified && Number.isFinite(r.angleBound) && r.angleBound <= 90, JSON.stringify(r));
+    assert.ok(r.maxAngle < r.angleBound + 1e-9);
+    assert.match(await page.textContent('#status'), new RegExp(`auto: every angle below ${Number(r.angleBound.toFixed(1))}°`));
+    assert.equal((await histogramMarks(page)).bound, String(r.angleBound));
+  } else {
+    // A mesher without 'auto': the page asks for its default instead of failing.
+    assert.deepEqual(r.options, { mode: 'acute', maxAngle: 90 });
+    assert.equal(r.certified, true);
+  }
+  await shot(page, 'max-angle-auto-phone');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
