@@ -493,11 +493,7 @@ Result meshInRange(const Pslg& input, const Options& options) {
     stats.angleFloor = detail::angleFloor(stats.smallestDomainAngle);
     belowFloor = warnAboutInputAngles(input, target, stats);
     if (belowFloor) target.maxAngle = kAutoMaxAngle;
-    Options aim = target;
-    // refine() does not aim below 90 for kAutoMaxAngle yet (issue 23): until it does, such
-    // runs are meshed to 90, and the certificate finds the bound reached.
-    if (aim.maxAngle == kAutoMaxAngle) aim.maxAngle = 90;
-    step = detail::refine(T, input, aim, budget, freeVertex, exact);
+    step = detail::refine(T, input, target, budget, freeVertex, exact);
     inside = std::move(T.inside);
     clock.end("refine");
     if (step.status == Status::Cancelled || step.status == Status::TargetNotMet) {

@@ -66,8 +66,9 @@ double CornerFans::radiusFor(uint32_t v, bool onlyWhereBad) {
   const double smallSector = job_.target.nonObtuse ? kSmallAngleNonObtuse : kSmallAngle;
   bool small = false;
   for (size_t i = 0; i < spokes_.size(); ++i)
-    small |= spokes_[i].sectorInside && sectorAngle(i) < smallSector &&
-             (spokes_[i].sectorBad || !onlyWhereBad);
+    small |= spokes_[i].sectorInside &&
+             (job_.strategy.fansEverywhere ||
+              (sectorAngle(i) < smallSector && (spokes_[i].sectorBad || !onlyWhereBad)));
   return small && std::isfinite(link) && link * link > 100 * job_.minEdge2 ? kFanFactor * link : 0;
 }
 
@@ -101,7 +102,9 @@ void CornerFans::build(uint32_t v, double r) {
     size_t j = (i + 1) % n;
     if (!spokes_[i].sectorInside || shell[i] == kNone || shell[j] == kNone) continue;
     double angle = sectorAngle(i);
-    int pieces = int(std::ceil(angle / kFanAngle));
+    int pieces = job_.strategy.fansEverywhere
+                     ? std::max(1, int(std::nearbyint(angle / kEvenFanAngle)))
+                     : int(std::ceil(angle / kFanAngle));
     ring.assign(1, shell[i]);
     for (int k = 1; k < pieces; ++k) {
       double a = spokes_[i].direction + angle * k / pieces;

@@ -48,6 +48,8 @@ constexpr int kCutAtFeetPasses = 4;
 constexpr double kSmallAngle = 60 * kDegree, kSmallAngleNonObtuse = 30 * kDegree;
 // A fan's isosceles triangles have apex angles of at most this.
 constexpr double kFanAngle = 80 * kDegree;
+// Fans at every corner (the descent below 90 degrees) cut it into sectors near this.
+constexpr double kEvenFanAngle = 60 * kDegree;
 // A fan's radius, as a fraction of its corner's distance to its link: under half keeps fans
 // apart and their triangles Delaunay.
 constexpr double kFanFactor = 0.49;
@@ -76,6 +78,39 @@ constexpr double kLargeGain = 0.03;
 // A pair whose joint link has this many edges or more is merged only where one point fits
 // without moving its neighbours: such tries almost never succeed.
 constexpr size_t kMergeLinkEdges = 11;
+
+// --- Bounds below 90 degrees (descent.h, below90.h) ---------------------------------------
+// The descent starts from a quality mesh with this minimum angle: every bound down to 75
+// degrees needs angles of at least 30.
+constexpr double kDescentMinAngle = 30;
+// The pattern search's first step, as a fraction of the distance to the nearest link vertex
+// (along a segment: of the stretch between the neighbours), and its finest.
+constexpr double kDescentStep = 0.25, kDescentFinestStep = 1e-3;
+// Steps of one pattern search at most.
+constexpr int kDescentSearchSteps = 64;
+// A point on a segment keeps this fraction of its stretch from either neighbour.
+constexpr double kDescentSegmentRoom = 0.05;
+// Smoothing sweeps per round at most; rounds in a row that do not lower the count of missed
+// triangles before the descent gives up.
+constexpr int kDescentSweeps = 4, kDescentStaleRounds = 5;
+// A round must lower the violation by this fraction, or the next looks two moves ahead.
+constexpr double kDescentGain = 0.02;
+// Smoothing leaves a star alone whose every triangle is this far within the bound (as the
+// cosine of its largest angle less the bound's).
+constexpr double kDescentSlack = 0.03;
+// Rounds per bound at most.
+constexpr int kDescentRounds = 24;
+
+// The direct refinement toward a bound below 90 (refine's repairs with the bound as target)
+// is tried from this bound up: below, it does not end before its Steiner cap.
+constexpr double kDirectFrom = 84;
+// The descents below 90 degrees may use this many times the acute mesh's Steiner points
+// (plus 200).
+constexpr double kBelow90Points = 8;
+// A graded descent refines away, before each bound L, the angles under 180 - 2 L + this.
+constexpr double kGradedRoom = 4;
+// --max-angle auto aims for the domain's floor plus this.
+constexpr double kAutoMargin = 0.5;
 
 static_assert(kHalvesGainFrom >= kSmallPolish && kLargeRoundFrom >= kHalvesGainFrom,
               "the rounds in halves start at kSmallPolish and run the larger meshes' round");

@@ -14,6 +14,7 @@
 #include "geometry.h"
 #include "params.h"
 #include "strategies.h"
+#include "below90.h"
 
 namespace acutemesh::detail {
 namespace {
@@ -43,7 +44,14 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
     plain.exactFeet = false;
     return refineOnce(start, input, plain, budget, 0, T, freeVertex, exact).result;
   }
-  const bool acuteBelow90 = options.mode == Mode::Acute && options.maxAngle < 90;
+  if (options.mode == Mode::Acute && (options.maxAngle < 90 || options.maxAngle == kAutoMaxAngle)) {
+    RefineState best;
+    StepResult result = refineBelow90(start, input, options, budget, best, exact);
+    best.markFree(freeVertex);
+    T = std::move(best.T);
+    return result;
+  }
+  const bool acuteBelow90 = false;
   const bool qualityBeyondSure = options.mode == Mode::Quality && options.minAngle > kSureMinAngle;
   if (!acuteBelow90 && !qualityBeyondSure)
     return refineOnce(start, input, options, budget, 0, T, freeVertex, exact).result;

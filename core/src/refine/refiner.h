@@ -38,6 +38,9 @@ class Refiner {
   // Improvement rounds (acute, non-obtuse; on a mesh that meets the target).
   void polish() { polish_.run(); }
   Reduce& reduce() { return reduce_; }
+  Insertion& insertion() { return insertion_; }
+  Boundary& boundary() { return boundary_; }
+  Relocation& relocation() { return relocation_; }
   Polish& polisher() { return polish_; }
 
  private:

@@ -21,6 +21,9 @@ struct Strategy {
   // Repair first the bad triangle whose repair leaves the fewest bad triangles, not the
   // largest (acute and non-obtuse).
   bool fewestBadFirst = false;
+  // The descent below 90 degrees (below90.h): a fan at every input corner, its sectors as
+  // near 60 degrees as whole numbers of them allow.
+  bool fansEverywhere = false;
   bool fallback = false;  // run only if no strategy before it met the target
 };
 

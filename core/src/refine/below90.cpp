@@ -1,0 +1,192 @@
+#include "below90.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "../domain_angles.h"
+#include "descent.h"
+#include "fans.h"
+#include "geometry.h"
+#include "refiner.h"
+#include "strategies.h"
+
+namespace acutemesh::detail {
+namespace {
+
+// The cosine of the largest angle of the domain's triangles (the smaller, the larger the
+// angle; only exact operations, so that every build compares meshes alike).
+double largestAngleCosine(const RefineState& s) {
+  double smallest = 1;
+  double d[3];
+  for (uint32_t t = 0; t < s.T.triangleSlots(); ++t) {
+    if (!s.T.inDomain(t)) continue;
+    const uint32_t* v = &s.T.tri[3 * t];
+    const double *a = s.P(v[0]), *b = s.P(v[1]), *c = s.P(v[2]);
+    const double* p[3] = {a, b, c};
+    for (int k = 0; k < 3; ++k) {
+      const double *x = p[k], *y = p[(k + 1) % 3], *z = p[(k + 2) % 3];
+      d[k] = ((y[0] - x[0]) * (z[0] - x[0]) + (y[1] - x[1]) * (z[1] - x[1])) /
+             std::sqrt(dist2(x, y) * dist2(x, z));
+      smallest = std::min(smallest, d[k]);
+    }
+  }
+  return smallest;
+}
+
+// A candidate mesh and what it reached.
+struct Candidate {
+  RefineState state;
+  bool acute = false;  // every angle below 90 (the first certificate)
+  bool met = false;    // the bound (and a minimum angle) met
+  double cosLargest = -1;
+  size_t steiner = 0;
+  // Better: meets the bound with fewer points, or (neither meets it) a smaller largest angle.
+  bool betterThan(const Candidate& o) const {
+    if (!acute) return false;
+    if (!o.acute) return true;
+    if (met != o.met) return met;
+    if (met) return steiner < o.steiner;
+    return cosLargest > o.cosLargest;
+  }
+};
+
+Candidate judge(RefineState&& s, const Pslg& input, const Options& options) {
+  Candidate c;
+  Options at90 = options;
+  at90.maxAngle = 90, at90.minAngle = 0;
+  c.acute = !Target(at90).anyMissed(s);
+  c.met = c.acute && !Target(options).anyMissed(s);
+  c.cosLargest = largestAngleCosine(s);
+  c.steiner = s.liveSteiner(input.vertexCount());
+  c.state = std::move(s);
+  return c;
+}
+
+// The bounds the descent goes down through to reach `lowest`: a step of two degrees down to
+// 80, then one, then half a degree; the last is `lowest` itself.
+std::vector<double> levelsDownTo(double lowest) {
+  std::vector<double> levels;
+  for (double level = 88; level > lowest; level -= level > 80 ? 2 : level > 76 ? 1 : 0.5)
+    levels.push_back(level);
+  levels.push_back(lowest);
+  return levels;
+}
+
+// Where a descent starts. No one start wins everywhere (docs/TUNING.md): the acute mesh has
+// the fewest points but its skinny triangles must go below 80 degrees; a quality mesh has none
+// but more points; fans at every corner settle corners the others leave stuck.
+enum class Start { Acute, AcuteGraded, Quality, QualityFans };
+constexpr Start kStarts[] = {Start::Acute, Start::AcuteGraded, Start::Quality, Start::QualityFans};
+
+// The quality mesh of `from` with minimum angle `minAngle` (with fans at every corner first:
+// the quality refinement keeps them, their points free afterwards).
+RefineState qualityMesh(const RefineState& from, const Pslg& input, const Options& options,
+                        const Budget& budget, uint32_t steinerCap, double minAngle, bool fans) {
+  Options quality = options;
+  quality.mode = Mode::Quality;
+  quality.minAngle = std::max(options.minAngle, minAngle);
+  RefineState start = from, s;
+  if (fans) {
+    Strategy everywhere;
+    everywhere.fansEverywhere = true;
+    const Target target(quality);
+    RunLimits limits;
+    const Job job{input, quality, target, everywhere, budget, &limits, smallestEdge2(input)};
+    CornerFans(start, job).buildAll();
+  }
+  std::vector<ExactVertex> none;
+  refineWithStrategies(start, input, quality, budget, steinerCap, s, none);
+  for (size_t v = 0; v < s.role.size(); ++v) {
+    if (s.role[v] == kArc) s.role[v] = kFree;
+    s.fanCenter[v] = kNone;
+  }
+  return s;
+}
+
+// The descent (descent.h) from `s` down through the levels to `lowest`: the mesh of the
+// lowest level met, polished at that level, unless where the descent stopped is better.
+// With `graded`, the triangles too skinny for a level (an angle under 180 - 2 level) are
+// refined away before it (quality refinement, which ends for such angles).
+Candidate descend(RefineState s, const Pslg& input, const Options& options, const Budget& budget,
+                  uint32_t steinerCap, double lowest, bool graded) {
+  RunLimits limits;
+  limits.steinerLimit = uint32_t(std::min<double>(s.T.vertexCount() + double(steinerCap),
+                                                  double(kMaxVertices)));
+  const Strategy strategy;
+  const double minEdge2 = smallestEdge2(input);
+  RefineState met;
+  double reached = 0;
+  for (double level : levelsDownTo(lowest)) {
+    if (budget.stop()) break;
+    if (graded)
+      s = qualityMesh(s, input, options, budget, steinerCap,
+                      std::min(180 - 2 * level + kGradedRoom, kDescentMinAngle), false);
+    Options at = options;
+    at.maxAngle = level;
+    const Target target(at);
+    const Job job{input, at, target, strategy, budget, &limits, minEdge2};
+    Refiner refiner(s, job);
+    AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), refiner.relocation());
+    if (!descent.run()) break;
+    met = s;
+    reached = level;
+  }
+  Candidate stopped = judge(std::move(s), input, options);
+  if (reached == 0) return stopped;
+  Options at = options;
+  at.maxAngle = reached;
+  const Target target(at);
+  const Job job{input, at, target, strategy, budget, &limits, minEdge2};
+  Refiner refiner(met, job);
+  if (!budget.stop()) refiner.polish();
+  Candidate polished = judge(std::move(met), input, options);
+  return stopped.betterThan(polished) ? std::move(stopped) : std::move(polished);
+}
+
+}  // namespace
+
+StepResult refineBelow90(const RefineState& start, const Pslg& input, const Options& options,
+                         const Budget& budget, RefineState& out, std::vector<ExactVertex>& exact) {
+  const bool automatic = options.maxAngle == kAutoMaxAngle;
+  Options at90 = options;
+  at90.maxAngle = 90;
+  RefineState first;
+  RefineOutcome o = refineWithStrategies(start, input, at90, budget, 0, first, exact);
+  Candidate best = judge(std::move(first), input, options);
+  auto finish = [&](StepResult result) {
+    out = std::move(best.state);
+    return result;
+  };
+  if (!best.acute || budget.stop()) return finish(o.result);
+  exact.clear();  // (non-obtuse only)
+  // Each later try may use a few times the points of the acute mesh.
+  const uint32_t cap =
+      uint32_t(std::min<double>(kBelow90Points * double(best.steiner) + 200, double(kMaxVertices)));
+  if (!automatic && options.maxAngle >= kDirectFrom) {
+    RefineState direct;
+    refineWithStrategies(start, input, options, budget, cap, direct, exact);
+    Candidate c = judge(std::move(direct), input, options);
+    if (c.betterThan(best)) best = std::move(c);
+  }
+  const double lowest =
+      automatic ? angleFloor(smallestDomainAngle(start.T)) + kAutoMargin : options.maxAngle;
+  const RefineState acute = best.state;
+  for (Start from : kStarts) {
+    if (best.met || budget.stop()) break;
+    const bool quality = from == Start::Quality || from == Start::QualityFans;
+    RefineState s = quality ? qualityMesh(start, input, options, budget, cap, kDescentMinAngle,
+                                          from == Start::QualityFans)
+                            : acute;
+    Candidate c = descend(std::move(s), input, options, budget, cap, lowest,
+                          from == Start::AcuteGraded);
+    if (c.betterThan(best)) best = std::move(c);
+  }
+  if (best.met || automatic) return finish({});
+  const double largest = std::acos(std::max(-1.0, std::min(1.0, best.cosLargest))) * 180 / M_PI;
+  return finish({budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
+                 "the bound of " + degreesText(options.maxAngle) +
+                     " was not reached; the mesh is acute, its largest angle " +
+                     degreesText(largest)});
+}
+
+}  // namespace acutemesh::detail

@@ -1,0 +1,512 @@
+#include "descent.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "params.h"
+
+namespace acutemesh::detail {
+namespace {
+
+constexpr double kInvalid = -std::numeric_limits<double>::infinity();
+
+// The eight directions of the pattern search (unit length).
+constexpr double kDiag = 0.70710678118654752;
+constexpr double kDirections[8][2] = {{1, 0},      {0, 1},      {-1, 0},      {0, -1},
+                                      {kDiag, kDiag}, {-kDiag, kDiag}, {-kDiag, -kDiag}, {kDiag, -kDiag}};
+
+}  // namespace
+
+// The star of v in star_ (no ghost in it), and for a point on a segment its neighbours there
+// in seg_; false for a vertex that does not move (an input vertex, a fan's point while fans
+// stand, a point on a segment with other fixed edges).
+bool AngleDescent::gather(uint32_t v) {
+  const Triangulation& T = s_.T;
+  const uint8_t role = s_.role[v];
+  const bool onSegment = role == kOnSegment || role == kOnHull;
+  if (!(role == kFree || onSegment) || T.vertexEdge[v] == kNone) return false;
+  star_.clear();
+  starInside_.clear();
+  uint32_t fixedSpokes = 0, e0 = T.vertexEdge[v], e = e0;
+  do {
+    if (T.isGhost(e / 3)) return false;
+    if (T.isFixed(e)) {
+      if (!onSegment || fixedSpokes == 2) return false;
+      seg_[fixedSpokes++] = T.tri[next(e)];
+      segment_ = T.segment[e];
+    }
+    star_.push_back(e / 3);
+    starInside_.push_back(T.inDomain(e / 3));
+    e = T.opp[prev(e)];
+  } while (e != e0);
+  return !onSegment || fixedSpokes == 2;
+}
+
+// The margins of the star's domain triangles, smallest first, into `out`: for each the cosine
+// of its largest angle less the bound's (and with a minimum angle, the cosine of that less
+// its smallest angle's, if smaller). Empty (and false) if a triangle of the star is not
+// counter-clockwise (in floating point: a move is confirmed with exact predicates). Stars are
+// compared by these lists (leximin): the worst triangle first, then the next, so that a move
+// that helps the worst does not spoil the others.
+bool AngleDescent::margins(std::vector<double>& out) const {
+  const Target& target = job_.target;
+  const Triangulation& T = s_.T;
+  out.clear();
+  for (size_t i = 0; i < star_.size(); ++i) {
+    const uint32_t* v = &T.tri[3 * star_[i]];
+    const double *a = T.point(v[0]), *b = T.point(v[1]), *c = T.point(v[2]);
+    const double abx = b[0] - a[0], aby = b[1] - a[1], acx = c[0] - a[0], acy = c[1] - a[1];
+    if (abx * acy - aby * acx <= 0) {
+      out.clear();
+      return false;
+    }
+    if (!starInside_[i]) continue;
+    const double bcx = c[0] - b[0], bcy = c[1] - b[1];
+    const double la = bcx * bcx + bcy * bcy, lb = acx * acx + acy * acy,
+                 lc = abx * abx + aby * aby;
+    // Cosines at a, b, c from the squared sides (law of cosines).
+    const double ca = (lb + lc - la) / (2 * std::sqrt(lb * lc)),
+                 cb = (la + lc - lb) / (2 * std::sqrt(la * lc)),
+                 cc = (la + lb - lc) / (2 * std::sqrt(la * lb));
+    double m = std::min({ca, cb, cc}) - target.cosMax;
+    if (target.minAngle > 0) m = std::min(m, target.cosMin - std::max({ca, cb, cc}));
+    out.push_back(m);
+  }
+  std::sort(out.begin(), out.end());
+  return true;
+}
+
+bool AngleDescent::marginsAt(uint32_t v, const double* p, std::vector<double>& out) {
+  double* at = &s_.T.pts[2 * size_t(v)];
+  at[0] = p[0], at[1] = p[1];
+  return margins(out);
+}
+
+// Whether margins a are better than b (leximin, ignoring differences under kEven).
+bool AngleDescent::better(const std::vector<double>& a, bool aValid, const std::vector<double>& b,
+                          bool bValid) {
+  constexpr double kEven = 1e-12;
+  if (!aValid || !bValid) return aValid && !bValid;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    if (a[i] > b[i] + kEven) return true;
+    if (a[i] < b[i] - kEven) return false;
+  }
+  return false;
+}
+
+// Puts v at p if its star stays a valid triangulation there (exact) with no edge shorter than
+// refinement's smallest, and restores the Delaunay property around it; else v stays.
+bool AngleDescent::settleAt(uint32_t v, const double* p) {
+  Triangulation& T = s_.T;
+  double* at = &T.pts[2 * size_t(v)];
+  const double old[2] = {at[0], at[1]};
+  at[0] = p[0], at[1] = p[1];
+  bool valid = true;
+  for (size_t i = 0; i < star_.size() && valid; ++i) {
+    const uint32_t* t = &T.tri[3 * star_[i]];
+    valid = orient2d(T.point(t[0]), T.point(t[1]), T.point(t[2])) > 0;
+    for (int k = 0; k < 3 && valid; ++k)
+      valid = t[k] == v || dist2(p, T.point(t[k])) >= job_.minEdge2;
+  }
+  if (!valid) {
+    at[0] = old[0], at[1] = old[1];
+    return false;
+  }
+  return true;
+}
+
+// The cosine of the largest angle of triangle a, b, c.
+static double largestCosine(const double* a, const double* b, const double* c) {
+  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
+  if (la >= lb && la >= lc) return (lb + lc - la) / (2 * std::sqrt(lb * lc));
+  if (lb >= lc) return (la + lc - lb) / (2 * std::sqrt(la * lc));
+  return (la + lb - lc) / (2 * std::sqrt(la * lb));
+}
+
+// Flips every edge between two triangles of the domain whose flip lowers the larger of
+// their largest angles; the number flipped.
+bool AngleDescent::flipIfBetter(uint32_t e) {
+  Triangulation& T = s_.T;
+  const uint32_t f = T.opp[e];
+  if (T.isFree(e / 3) || f == kNone || T.isFixed(e)) return false;
+  if (!T.inDomain(e / 3) || !T.inDomain(f / 3)) return false;
+  const uint32_t x = T.tri[e], y = T.tri[next(e)], z = T.tri[prev(e)], w = T.tri[prev(f)];
+  const double *px = T.point(x), *py = T.point(y), *pz = T.point(z), *pw = T.point(w);
+  const double now = std::min(largestCosine(px, py, pz), largestCosine(py, px, pw));
+  const double after = std::min(largestCosine(pz, px, pw), largestCosine(pw, py, pz));
+  if (!(after > now + 1e-12)) return false;
+  if (orient2d(pz, px, pw) <= 0 || orient2d(pw, py, pz) <= 0) return false;
+  T.flip(e);
+  return true;
+}
+
+size_t AngleDescent::flipPass() {
+  size_t flipped = 0;
+  for (uint32_t e = 0; e < 3 * s_.T.triangleSlots(); ++e)
+    if (e < s_.T.opp[e] || s_.T.opp[e] == kNone) flipped += flipIfBetter(e);
+  return flipped;
+}
+
+// A pattern search from the best of the current place, the middle of the link and the
+// optimal Delaunay triangulation's place (the star's circumcentres weighed by area, which
+// evens out the triangles).
+bool AngleDescent::optimiseFree(uint32_t v) {
+  const Triangulation& T = s_.T;
+  const double start[2] = {T.point(v)[0], T.point(v)[1]};
+  double best[2] = {start[0], start[1]};
+  bool bestValid = margins(best_);
+  first_ = best_;
+  double mean[2] = {0, 0}, odt[2] = {0, 0}, area = 0, nearest2 = INFINITY;
+  for (uint32_t t : star_) {
+    const uint32_t* c = &T.tri[3 * t];
+    const double *a = T.point(c[0]), *b = T.point(c[1]), *d = T.point(c[2]);
+    double cc[2];
+    circumcenter(a, b, d, cc);
+    const double w = 0.5 * std::fabs((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
+    odt[0] += w * cc[0], odt[1] += w * cc[1], area += w;
+    for (int k = 0; k < 3; ++k)
+      if (c[k] != v && c[(k + 1) % 3] == v) {  // each link vertex once: the one before v
+        mean[0] += T.point(c[k])[0] / double(star_.size());
+        mean[1] += T.point(c[k])[1] / double(star_.size());
+        nearest2 = std::min(nearest2, dist2(start, T.point(c[k])));
+      }
+  }
+  odt[0] /= area, odt[1] /= area;
+  auto tryAt = [&](const double* q) {
+    if (!std::isfinite(q[0]) || !std::isfinite(q[1])) return false;
+    const bool valid = marginsAt(v, q, try_);
+    if (!better(try_, valid, best_, bestValid)) return false;
+    best_.swap(try_);
+    bestValid = true;
+    best[0] = q[0], best[1] = q[1];
+    return true;
+  };
+  tryAt(mean);
+  tryAt(odt);
+  const double r = std::sqrt(nearest2);
+  if (!(r > 0 && r < INFINITY)) return false;
+  int steps = 0;
+  for (double h = kDescentStep * r; h > kDescentFinestStep * r && ++steps < kDescentSearchSteps;) {
+    const double from[2] = {best[0], best[1]};
+    bool moved = false;
+    for (const auto& d : kDirections) {
+      const double q[2] = {from[0] + h * d[0], from[1] + h * d[1]};
+      moved |= tryAt(q);
+    }
+    if (!moved) h *= 0.5;
+  }
+  marginsAt(v, start, try_);
+  return (best[0] != start[0] || best[1] != start[1]) && settleAt(v, best);
+}
+
+// The same along the segment, between v's neighbours on it.
+bool AngleDescent::optimiseOnSegment(uint32_t v) {
+  const Triangulation& T = s_.T;
+  const double start[2] = {T.point(v)[0], T.point(v)[1]};
+  const double *a = T.point(seg_[0]), *b = T.point(seg_[1]);
+  const SegmentLine line = job_.line(segment_, a, b);
+  const double ta = line.param(a), tb = line.param(b);
+  const double lo = std::min(ta, tb), hi = std::max(ta, tb), room = kDescentSegmentRoom * (hi - lo);
+  bool bestValid = margins(best_);
+  double best = line.param(start);
+  bool movedAtAll = false;
+  if (!(hi - lo > 0 && hi - lo < INFINITY)) return false;
+  int steps = 0;
+  for (double h = kDescentStep * (hi - lo); h > kDescentFinestStep * (hi - lo) && ++steps < kDescentSearchSteps;) {
+    const double from = best;
+    bool moved = false;
+    for (double t : {from - h, from + h}) {
+      if (!(t > lo + room && t < hi - room)) continue;
+      double q[2];
+      line.at(t, q);
+      const bool valid = marginsAt(v, q, try_);
+      if (!better(try_, valid, best_, bestValid)) continue;
+      best_.swap(try_);
+      bestValid = true, best = t, moved = true;
+    }
+    movedAtAll |= moved;
+    if (!moved) h *= 0.5;
+  }
+  marginsAt(v, start, try_);
+  if (!movedAtAll) return false;
+  double q[2];
+  line.at(best, q);
+  return settleAt(v, q);
+}
+
+// Moves Steiner vertex v where its star is best, if some triangle of the star is within
+// kDescentSlack of the bound or past it (elsewhere a move would only cost time).
+bool AngleDescent::optimise(uint32_t v) {
+  if (!gather(v) || (margins(best_) && best_.front() > kDescentSlack)) return false;
+  return s_.role[v] == kFree ? optimiseFree(v) : optimiseOnSegment(v);
+}
+
+size_t AngleDescent::smooth() {
+  size_t moved = 0;
+  for (uint32_t v = uint32_t(job_.input.vertexCount()); v < s_.T.vertexCount(); ++v) {
+    moved += optimise(v);
+  }
+  return moved;
+}
+
+size_t AngleDescent::missed() const {
+  size_t count = 0;
+  for (uint32_t t = 0; t < s_.T.triangleSlots(); ++t) count += job_.target.misses(s_, t);
+  return count;
+}
+
+// How far the domain's triangles are from the target in all: the sum of their negative
+// margins (as margins() reckons them), 0 when every one meets it.
+double AngleDescent::violation() const {
+  const Target& target = job_.target;
+  const Triangulation& T = s_.T;
+  double sum = 0;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
+    if (!T.inDomain(t)) continue;
+    const uint32_t* v = &T.tri[3 * t];
+    const double *a = T.point(v[0]), *b = T.point(v[1]), *c = T.point(v[2]);
+    const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
+    const double ca = (lb + lc - la) / (2 * std::sqrt(lb * lc)),
+                 cb = (la + lc - lb) / (2 * std::sqrt(la * lc)),
+                 cc = (la + lb - lc) / (2 * std::sqrt(la * lb));
+    double m = std::min({ca, cb, cc}) - target.cosMax;
+    if (target.minAngle > 0) m = std::min(m, target.cosMin - std::max({ca, cb, cc}));
+    if (m < 0 || target.misses(s_, t)) sum += std::max(-m, 1e-9);
+  }
+  return sum;
+}
+
+// Smoothing sweeps over the vertices of the triangles `touched` lists and their neighbours.
+void AngleDescent::smoothAround(const std::vector<uint32_t>& touched) {
+  const Triangulation& T = s_.T;
+  near_.clear();
+  for (uint32_t t : touched) {
+    if (T.isFree(t)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = T.tri[3 * t + k];
+      if (v == kGhost || T.vertexEdge[v] == kNone) continue;
+      near_.push_back(v);
+      uint32_t e0 = T.vertexEdge[v], e = e0;
+      do {
+        near_.push_back(T.tri[next(e)]);
+        e = T.opp[prev(e)];
+      } while (e != e0);
+    }
+  }
+  std::sort(near_.begin(), near_.end());
+  near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
+  const Triangulation& T2 = s_.T;
+  for (int sweep = 0; sweep < kDescentSweeps; ++sweep) {
+    size_t moved = 0;
+    for (uint32_t v : near_)
+      if (v != kGhost && v >= job_.input.vertexCount()) moved += optimise(v);
+    for (uint32_t v : near_) {
+      if (v == kGhost || T2.vertexEdge[v] == kNone) continue;
+      for (int again = 0; again < 8; ++again) {  // (a flip changes the star: walk it anew)
+        bool flipped = false;
+        uint32_t e0 = T2.vertexEdge[v], e = e0;
+        do {
+          if (flipIfBetter(next(e))) { flipped = true; break; }
+          e = T2.opp[prev(e)];
+        } while (e != e0);
+        if (!flipped) break;
+        ++moved;
+      }
+    }
+    if (moved == 0) break;
+  }
+}
+
+// The edge opposite the largest angle of t.
+uint32_t AngleDescent::longestEdge(uint32_t t) const {
+  const Triangulation& T = s_.T;
+  const uint32_t* c = &T.tri[3 * t];
+  int k = 0;
+  double longest = -1;
+  for (int i = 0; i < 3; ++i) {
+    const double len = dist2(T.point(c[(i + 1) % 3]), T.point(c[(i + 2) % 3]));
+    if (len > longest) longest = len, k = i;
+  }
+  return 3 * t + uint32_t(k + 1) % 3;
+}
+
+// The moves tried for triangle t, which misses the target, best first: where the angle
+// over the bound is at a vertex that does not move (an input corner, a point on a segment),
+// an edge from it, to the apex of the equilateral triangle on either of its edges or to a
+// point on its bisector; the edge opposite that angle split in the middle (a subsegment by
+// the boundary rule's split); a point at the circumcentre; one of t's Steiner points removed.
+void AngleDescent::movesFor(uint32_t t, std::vector<Move>& out) const {
+  const Triangulation& T = s_.T;
+  const uint32_t* c = &T.tri[3 * t];
+  const uint32_t e = longestEdge(t), apex = T.tri[prev(e)];
+  out.clear();
+  if (s_.role[apex] != kFree) {
+    const double *o = T.point(apex), *p = T.point(T.tri[e]), *q = T.point(T.tri[next(e)]);
+    const double h = 0.8660254037844386;  // sin 60
+    out.push_back({Move::Insert, t, kNone, o[0] + 0.5 * (p[0] - o[0]) - h * (p[1] - o[1]),
+                   o[1] + 0.5 * (p[1] - o[1]) + h * (p[0] - o[0])});
+    out.push_back({Move::Insert, t, kNone, o[0] + 0.5 * (q[0] - o[0]) + h * (q[1] - o[1]),
+                   o[1] + 0.5 * (q[1] - o[1]) - h * (q[0] - o[0])});
+    const double lp = std::sqrt(dist2(o, p)), lq = std::sqrt(dist2(o, q));
+    const double ux = (p[0] - o[0]) / lp + (q[0] - o[0]) / lq,
+                 uy = (p[1] - o[1]) / lp + (q[1] - o[1]) / lq;
+    const double un = std::sqrt(ux * ux + uy * uy);
+    for (double f : {0.5, 0.75, 1.0}) {
+      const double scale = f * std::min(lp, lq) / un;
+      out.push_back({Move::Insert, t, kNone, o[0] + ux * scale, o[1] + uy * scale});
+    }
+  }
+  out.push_back({Move::Split, t, e, 0, 0});
+  double cc[2];
+  circumcenter(T.point(c[0]), T.point(c[1]), T.point(c[2]), cc);
+  out.push_back({Move::Insert, t, kNone, cc[0], cc[1]});
+  for (int k = 0; k < 3; ++k)
+    if (c[k] >= job_.input.vertexCount()) out.push_back({Move::Remove, t, c[k], 0, 0});
+}
+
+// Puts a free point at x, reached from triangle `from` without crossing a segment, whatever
+// it encroaches (smoothing is what settles the points around it); false if x is not in the
+// domain, on an edge or too near a vertex.
+bool AngleDescent::insertFree(uint32_t from, const double* x) {
+  Triangulation& T = s_.T;
+  if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
+  uint32_t reached = kNone;
+  if (firstFixedCrossed(T, from, x, reached) != kNone || reached == kNone || !T.inDomain(reached))
+    return false;
+  const Location loc = T.locate(x, reached);
+  if (loc.where != Where::InTriangle || !T.inDomain(loc.tri)) return false;
+  for (uint32_t k = 0; k < 3; ++k)
+    if (dist2(x, T.point(T.tri[3 * loc.tri + k])) < job_.minEdge2) return false;
+  const uint32_t v = s_.addVertex(x, kFree);
+  if (T.insertAt(v, loc) == v) return true;
+  s_.dropLastVertex();
+  return false;
+}
+
+bool AngleDescent::apply(const Move& m) {
+  Triangulation& T = s_.T;
+  switch (m.kind) {
+    case Move::Insert: {
+      const double x[2] = {m.x, m.y};
+      return insertFree(m.t, x);
+    }
+    case Move::Split: {
+      if (T.isFixed(m.what)) return boundary_.splitSubsegment(m.what, 0.5);
+      const double *p = T.point(T.tri[m.what]), *q = T.point(T.tri[next(m.what)]);
+      const double x[2] = {0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])};
+      return insertFree(m.t, x) || insertion_.insertSteiner(m.t, x);
+    }
+    case Move::Remove: {
+      if (s_.role[m.what] == kFree) return T.removeVertex(m.what);
+      uint32_t ends[2];
+      return (s_.role[m.what] == kOnSegment || s_.role[m.what] == kOnHull) &&
+             T.removeFromSegment(m.what, ends);
+    }
+  }
+  return false;
+}
+
+// Of the triangles around the vertices smoothAround() last worked on, the one that misses the
+// target by most; kNone if none does.
+uint32_t AngleDescent::worstNear() {
+  const Triangulation& T = s_.T;
+  uint32_t worst = kNone;
+  double lowest = INFINITY;
+  for (uint32_t v : near_) {
+    if (v == kGhost || T.vertexEdge[v] == kNone) continue;
+    uint32_t e0 = T.vertexEdge[v], e = e0;
+    do {
+      const uint32_t t = e / 3;
+      if (job_.target.misses(s_, t)) {
+        const uint32_t* c = &T.tri[3 * t];
+        const double m = largestCosine(T.point(c[0]), T.point(c[1]), T.point(c[2]));
+        if (m < lowest) lowest = m, worst = t;
+      }
+      e = T.opp[prev(e)];
+    } while (e != e0);
+  }
+  return worst;
+}
+
+// Tries the moves for t in turn, each followed by smoothing around what it changed; keeps the
+// first that lowers the violation below `now`. With depth > 1 a move that does not is given
+// a second move at the worst triangle near it (a look-ahead: a corner often needs two points
+// before either helps). What is not kept is put back as it was.
+bool AngleDescent::fix(uint32_t t, int depth, double& now) {
+  std::vector<Move> moves;
+  movesFor(t, moves);
+  for (const Move& m : moves) {
+    if (job_.budget.stop()) return false;
+    saved_.push_back(s_);
+    touched_.clear();
+    s_.T.touched = &touched_;
+    const bool changed = apply(m);
+    s_.T.touched = nullptr;
+    if (changed) {
+      smoothAround(touched_);
+      const double after = violation();
+      if (after < now - 1e-12) {
+        now = after;
+        saved_.pop_back();
+        return true;
+      }
+      const uint32_t u = depth > 1 ? worstNear() : kNone;
+      if (u != kNone && fix(u, depth - 1, now)) {
+        saved_.pop_back();
+        return true;
+      }
+    }
+    s_ = std::move(saved_.back());
+    saved_.pop_back();
+  }
+  return false;
+}
+
+// fix() for each triangle that misses the target (while it is still there and still misses
+// it); the number of fixes kept.
+size_t AngleDescent::repair(int depth) {
+  struct Bad {
+    uint32_t t, a, b, c;
+  };
+  std::vector<Bad> bad;
+  const Triangulation& T = s_.T;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t)
+    if (job_.target.misses(s_, t)) bad.push_back({t, T.tri[3 * t], T.tri[3 * t + 1], T.tri[3 * t + 2]});
+  double now = violation();
+  size_t kept = 0;
+  for (const Bad& x : bad) {
+    if (job_.limits->reached(T.vertexCount()) || job_.budget.stop()) break;
+    const uint32_t* c = &T.tri[3 * x.t];
+    if (c[0] != x.a || c[1] != x.b || c[2] != x.c || !job_.target.misses(s_, x.t)) continue;
+    kept += fix(x.t, depth, now);
+  }
+  return kept;
+}
+
+bool AngleDescent::run() {
+  double least = INFINITY;
+  int depth = 1;
+  for (int stale = 0, round = 0; round < kDescentRounds; ++round) {
+    for (int sweep = 0; sweep < kDescentSweeps && !job_.budget.stop(); ++sweep)
+      if (smooth() + flipPass() == 0) break;
+    const double now = violation();
+    if (now == 0) return true;
+    if (job_.budget.stop() || job_.limits->reached(s_.T.vertexCount())) return false;
+    // Look-ahead only once single moves stop gaining.
+    if (now < least * (1 - kDescentGain)) {
+      least = now, stale = 0;
+    } else if (++stale >= kDescentStaleRounds) {
+      return false;
+    } else {
+      depth = 2;
+    }
+    if (repair(depth) == 0) {
+      if (depth == 2) return false;
+      depth = 2;
+    }
+  }
+  return false;
+}
+
+}  // namespace acutemesh::detail
