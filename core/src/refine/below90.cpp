@@ -75,8 +75,9 @@ std::vector<double> levelsDownTo(double lowest) {
 // Where a descent starts. No one start wins everywhere (docs/TUNING.md): the acute mesh has
 // the fewest points but its skinny triangles must go below 80 degrees; a quality mesh has none
 // but more points; fans at every corner settle corners the others leave stuck.
-enum class Start { Acute, AcuteGraded, Quality, QualityFans };
-constexpr Start kStarts[] = {Start::Acute, Start::AcuteGraded, Start::Quality, Start::QualityFans};
+enum class Start { Direct, Acute, AcuteGraded, Quality, QualityFans };
+constexpr Start kStarts[] = {Start::Direct, Start::Acute, Start::AcuteGraded, Start::Quality,
+                             Start::QualityFans};
 
 // The quality mesh of `from` with minimum angle `minAngle` (with fans at every corner first:
 // the quality refinement keeps them, their points free afterwards).
@@ -162,21 +163,25 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
   // Each later try may use a few times the points of the acute mesh.
   const uint32_t cap =
       uint32_t(std::min<double>(kBelow90Points * double(best.steiner) + 200, double(kMaxVertices)));
-  if (!automatic && options.maxAngle >= kDirectFrom) {
-    RefineState direct;
-    refineWithStrategies(start, input, options, budget, cap, direct, exact);
-    Candidate c = judge(std::move(direct), input, options);
-    if (c.betterThan(best)) best = std::move(c);
-  }
   const double lowest =
       automatic ? angleFloor(smallestDomainAngle(start.T)) + kAutoMargin : options.maxAngle;
   const RefineState acute = best.state;
   for (Start from : kStarts) {
     if (best.met || budget.stop()) break;
-    const bool quality = from == Start::Quality || from == Start::QualityFans;
-    RefineState s = quality ? qualityMesh(start, input, options, budget, cap, kDescentMinAngle,
-                                          from == Start::QualityFans)
-                            : acute;
+    RefineState s;
+    if (from == Start::Direct) {
+      // Acute refinement to the bound itself, or to kDirectFrom where the bound is lower
+      // (below it the repairs do not end); the descent goes on from there.
+      Options direct = options;
+      direct.maxAngle = std::max(lowest, kDirectFrom);
+      refineWithStrategies(start, input, direct, budget, cap, s, exact);
+      if (Target(direct).anyMissed(s)) continue;
+    } else if (from == Start::Quality || from == Start::QualityFans) {
+      s = qualityMesh(start, input, options, budget, cap, kDescentMinAngle,
+                      from == Start::QualityFans);
+    } else {
+      s = acute;
+    }
     Candidate c = descend(std::move(s), input, options, budget, cap, lowest,
                           from == Start::AcuteGraded);
     if (c.betterThan(best)) best = std::move(c);

@@ -102,8 +102,8 @@ constexpr double kDescentSlack = 0.03;
 constexpr int kDescentRounds = 24;
 
 // The direct refinement toward a bound below 90 (refine's repairs with the bound as target)
-// is tried from this bound up: below, it does not end before its Steiner cap.
-constexpr double kDirectFrom = 84;
+// aims no lower than this: below, it does not end before its Steiner cap.
+constexpr double kDirectFrom = 85;
 // The descents below 90 degrees may use this many times the acute mesh's Steiner points
 // (plus 200).
 constexpr double kBelow90Points = 8;
