@@ -8,7 +8,7 @@ import { loadEngine, meshInWorker, warmUp } from './engine.js';
 import { MeshView } from './view.js';
 import { analyse, CLASSES } from './angles.js';
 import { drawHistogram } from './histogram.js';
-import { AUTO, acceptsAuto, angleFloor, boundSentence, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
+import { AUTO, angleFloor, boundSentence, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
 import { DrawTool, encodeRings, decodeRings } from './draw.js';
 import { parseFont, textToRings, fontName } from './loaders/font.js';
 import { loadFile } from './loaders/index.js';
@@ -47,7 +47,6 @@ let lastMeshedKey = null;     // to fit the view only when the input itself chan
 let running = null;           // AbortController of the run in progress
 let runs = 0;
 let vocabulary = null;        // the mesher's names and defaults, once it has loaded
-let autoAccepted = false;     // whether the mesher takes maxAngle 'auto' (probed on load)
 let floorInfo = null;         // the current input's { corner, floor, from: 'input' | 'run' }
 warmUp();
 const enginePromise = loadEngine();
@@ -193,17 +192,14 @@ function meshOptions() {
   return o;
 }
 
-// 'auto' goes to the mesher only when it takes it (acceptsAuto, probed once it has loaded).
 function autoChosen() {
-  return autoAccepted && ui.maxAngleAuto.checked;
+  return ui.maxAngleAuto.checked;
 }
 
 function syncOptionInputs() {
   const m = ui.mode.value;
   ui.maxAngle.disabled = m !== 'acute' || autoChosen();
-  ui.maxAngleAuto.disabled = m !== 'acute' || !autoAccepted;
-  ui.maxAngleAuto.parentElement.title = autoAccepted || !vocabulary
-    ? 'The lowest bound the run can certify' : 'This build of the mesher does not offer "auto" yet';
+  ui.maxAngleAuto.disabled = m !== 'acute';
   showFloor();
   for (const el of [ui.minAngle, ui.maxArea, ui.maxSteiner]) el.disabled = m === 'cdt';
   // An empty input means the mesher's default, which the placeholder shows.
@@ -239,8 +235,6 @@ function showFloor() {
 function takeVocabulary(am) {
   if (vocabulary) return;
   vocabulary = am.vocabulary;
-  autoAccepted = acceptsAuto(am);
-  if (!autoAccepted) ui.maxAngleAuto.checked = false;
   for (const option of ui.mode.options) {
     const mode = vocabulary.modes.find((e) => e.name === option.value);
     if (mode) option.title = mode.description;

@@ -65,26 +65,11 @@ export function measureFloor(am, pslg) {
   }
 }
 
-// Whether this mesher takes maxAngle 'auto': its options check, on a triangulation of one
-// triangle (constrained Delaunay, so no refinement runs on the page's thread).
-export function acceptsAuto(am) {
-  const triangle = { points: new Float64Array([0, 0, 2, 0, 1, Math.sqrt(3)]), segments: new Uint32Array(0), holes: new Float64Array(0) };
-  try {
-    am.mesh(triangle, { mode: 'cdt', maxAngle: AUTO });
-    return true;
-  } catch {
-    return false;
-  }
-}
-
-// The bound every angle of the mesh is certified strictly below, or null when none is:
-// stats.angleBound when the mesher reports it; otherwise the bound asked for when it was met,
-// 90 when only acuteness was certified.
+// The bound every angle of the mesh is certified strictly below (stats.angleBound), or null
+// when none is.
 export function certifiedBound(stats, options) {
   if (!stats.certified || options.mode !== 'acute') return null;
-  if (Number.isFinite(stats.angleBound)) return stats.angleBound;
-  const asked = typeof options.maxAngle === 'number' ? options.maxAngle : 90;
-  return stats.targetMet !== false ? asked : 90;
+  return stats.angleBound;
 }
 
 const deg = (v, digits = 1) => `${Number(v.toFixed(digits))}°`;

@@ -117,6 +117,7 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
   const double minEdge2 = smallestEdge2(input);
   RefineState met;
   double reached = 0;
+  uint64_t moves = uint64_t(kDescentMoves + kDescentMovesPerVertex * s.T.vertexCount());
   for (double level : levelsDownTo(lowest)) {
     if (budget.stop()) break;
     if (graded)
@@ -127,7 +128,8 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
     const Target target(at);
     const Job job{input, at, target, strategy, budget, &limits, minEdge2};
     Refiner refiner(s, job);
-    AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), refiner.relocation());
+    AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), refiner.relocation(),
+                         moves);
     if (!descent.run()) break;
     met = s;
     reached = level;
@@ -165,6 +167,8 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
       uint32_t(std::min<double>(kBelow90Points * double(best.steiner) + 200, double(kMaxVertices)));
   const double lowest =
       automatic ? angleFloor(smallestDomainAngle(start.T)) + kAutoMargin : options.maxAngle;
+  // (A domain whose floor is within a hair of 90 degrees leaves auto nothing to gain.)
+  if (portableCos(lowest * kDegree) <= best.cosLargest) return finish({});
   const RefineState acute = best.state;
   for (Start from : kStarts) {
     if (best.met || budget.stop()) break;

@@ -297,7 +297,7 @@ void AngleDescent::smoothAround(const std::vector<uint32_t>& touched) {
   std::sort(near_.begin(), near_.end());
   near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
   const Triangulation& T2 = s_.T;
-  for (int sweep = 0; sweep < kDescentSweeps; ++sweep) {
+  for (int sweep = 0; sweep < kDescentLocalSweeps; ++sweep) {
     size_t moved = 0;
     for (uint32_t v : near_)
       if (v != kGhost && v >= job_.input.vertexCount()) moved += optimise(v);
@@ -437,7 +437,8 @@ bool AngleDescent::fix(uint32_t t, int depth, double& now) {
   std::vector<Move> moves;
   movesFor(t, moves);
   for (const Move& m : moves) {
-    if (job_.budget.stop()) return false;
+    if (job_.budget.stop() || movesLeft_ == 0) return false;
+    --movesLeft_;
     saved_.push_back(s_);
     touched_.clear();
     s_.T.touched = &touched_;
@@ -476,7 +477,7 @@ size_t AngleDescent::repair(int depth) {
   double now = violation();
   size_t kept = 0;
   for (const Bad& x : bad) {
-    if (job_.limits->reached(T.vertexCount()) || job_.budget.stop()) break;
+    if (job_.limits->reached(T.vertexCount()) || job_.budget.stop() || movesLeft_ == 0) break;
     const uint32_t* c = &T.tri[3 * x.t];
     if (c[0] != x.a || c[1] != x.b || c[2] != x.c || !job_.target.misses(s_, x.t)) continue;
     kept += fix(x.t, depth, now);

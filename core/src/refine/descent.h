@@ -23,9 +23,16 @@ namespace acutemesh::detail {
 
 class AngleDescent {
  public:
+  // `moves`: how many more moves (step 2) may be tried, counted down across descents (a work
+  // budget that makes the same mesh on every machine, as a time limit would not).
   AngleDescent(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
-               Relocation& relocation)
-      : s_(s), job_(job), insertion_(insertion), boundary_(boundary), relocation_(relocation) {}
+               Relocation& relocation, uint64_t& moves)
+      : s_(s),
+        job_(job),
+        insertion_(insertion),
+        boundary_(boundary),
+        relocation_(relocation),
+        movesLeft_(moves) {}
 
   // Rounds as above; true if every triangle of the domain then meets the target.
   bool run();
@@ -66,6 +73,7 @@ class AngleDescent {
   Insertion& insertion_;
   Boundary& boundary_;
   Relocation& relocation_;
+  uint64_t& movesLeft_;
   // The star of the vertex being moved: its triangles, and whether each is in the domain.
   std::vector<uint32_t> star_;
   std::vector<uint8_t> starInside_;

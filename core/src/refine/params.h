@@ -87,7 +87,7 @@ constexpr double kDescentMinAngle = 30;
 // (along a segment: of the stretch between the neighbours), and its finest.
 constexpr double kDescentStep = 0.25, kDescentFinestStep = 1e-3;
 // Steps of one pattern search at most.
-constexpr int kDescentSearchSteps = 64;
+constexpr int kDescentSearchSteps = 32;
 // A point on a segment keeps this fraction of its stretch from either neighbour.
 constexpr double kDescentSegmentRoom = 0.05;
 // Smoothing sweeps per round at most; rounds in a row that do not lower the count of missed
@@ -98,6 +98,10 @@ constexpr double kDescentGain = 0.02;
 // Smoothing leaves a star alone whose every triangle is this far within the bound (as the
 // cosine of its largest angle less the bound's).
 constexpr double kDescentSlack = 0.03;
+// Smoothing sweeps around a move at most.
+constexpr int kDescentLocalSweeps = 2;
+// Moves one descent may try, over all its bounds: this many, and this many per vertex.
+constexpr double kDescentMoves = 2000, kDescentMovesPerVertex = 8;
 // Rounds per bound at most.
 constexpr int kDescentRounds = 24;
 
