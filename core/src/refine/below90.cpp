@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "../domain_angles.h"
 #include "descent.h"
@@ -109,7 +110,7 @@ RefineState qualityMesh(const RefineState& from, const Pslg& input, const Option
 // With `graded`, the triangles too skinny for a level (an angle under 180 - 2 level) are
 // refined away before it (quality refinement, which ends for such angles).
 Candidate descend(RefineState s, const Pslg& input, const Options& options, const Budget& budget,
-                  uint32_t steinerCap, double lowest, bool graded) {
+                  uint32_t steinerCap, double lowest, bool graded, double done, double share) {
   RunLimits limits;
   limits.steinerLimit = uint32_t(std::min<double>(s.T.vertexCount() + double(steinerCap),
                                                   double(kMaxVertices)));
@@ -118,8 +119,13 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
   RefineState met;
   double reached = 0;
   uint64_t moves = uint64_t(kDescentMoves + kDescentMovesPerVertex * s.T.vertexCount());
-  for (double level : levelsDownTo(lowest)) {
+  const std::vector<double> levels = levelsDownTo(lowest);
+  for (size_t i = 0; i < levels.size(); ++i) {
+    const double level = levels[i];
     if (budget.stop()) break;
+    // (Progress: the starts in turn, each its bounds in turn.)
+    if (options.progress)
+      options.progress({"improve", done + share * double(i) / double(levels.size()), s.T.vertexCount()});
     if (graded)
       s = qualityMesh(s, input, options, budget, steinerCap,
                       std::min(180 - 2 * level + kGradedRoom, kDescentMinAngle), false);
@@ -186,8 +192,9 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
     } else {
       s = acute;
     }
+    const double share = 1.0 / double(std::size(kStarts));
     Candidate c = descend(std::move(s), input, options, budget, cap, lowest,
-                          from == Start::AcuteGraded);
+                          from == Start::AcuteGraded, share * double(int(from)), share);
     if (c.betterThan(best)) best = std::move(c);
   }
   if (best.met || automatic) return finish({});

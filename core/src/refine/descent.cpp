@@ -245,6 +245,7 @@ bool AngleDescent::optimise(uint32_t v) {
 size_t AngleDescent::smooth() {
   size_t moved = 0;
   for (uint32_t v = uint32_t(job_.input.vertexCount()); v < s_.T.vertexCount(); ++v) {
+    if ((v & 1023) == 0 && job_.budget.stop()) break;
     moved += optimise(v);
   }
   return moved;

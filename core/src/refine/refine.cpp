@@ -1,8 +1,7 @@
 // refine(): refinement toward options' target, with the fallbacks that keep every run ending
 // in the best certified mesh it can:
-//  - a bound below 90 degrees is best effort: if no strategy reaches it with half the Steiner
-//    budget, the input is meshed acute from the start again, so a run that falls short still
-//    ends acute and certified (TargetNotMet) rather than half refined;
+//  - a bound below 90 degrees (or auto) is refineBelow90's: anytime, from the acute mesh down,
+//    so a run that falls short still ends acute and certified (TargetNotMet);
 //  - a minimum angle above kSureMinAngle, where Delaunay refinement need not terminate: a run
 //    that uses half the budget is made again to kSureMinAngle;
 //  - exact feet (non-obtuse): should some triangle around them not be right at their exact
@@ -13,8 +12,8 @@
 #include "../build.h"
 #include "geometry.h"
 #include "params.h"
-#include "strategies.h"
 #include "below90.h"
+#include "strategies.h"
 
 namespace acutemesh::detail {
 namespace {
@@ -51,23 +50,13 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
     T = std::move(best.T);
     return result;
   }
-  const bool acuteBelow90 = false;
-  const bool qualityBeyondSure = options.mode == Mode::Quality && options.minAngle > kSureMinAngle;
-  if (!acuteBelow90 && !qualityBeyondSure)
+  if (options.mode != Mode::Quality || options.minAngle <= kSureMinAngle)
     return refineOnce(start, input, options, budget, 0, T, freeVertex, exact).result;
   const uint32_t half = uint32_t(std::clamp(
       steinerBudget(input, options, domainArea(start.T, options)) / 2, 1.0, double(kMaxVertices)));
   RefineOutcome o = refineOnce(start, input, options, budget, half, T, freeVertex, exact);
   if (o.result.status == Status::Cancelled || budget.stop()) return o.result;
   Options sure = options;
-  if (acuteBelow90) {
-    if (o.met) return o.result;
-    sure.maxAngle = 90;
-    o = refineOnce(start, input, sure, budget, 0, T, freeVertex, exact);
-    if (!o.met) return o.result;
-    return {Status::TargetNotMet, "the bound of " + degreesText(options.maxAngle) +
-                                      " was not reached; the mesh is acute"};
-  }
   // Quality: a run that ended short of the target for lack of points (not for input angles
   // below it, which no point mends) has been wandering.
   if (T.vertexCount() < start.T.vertexCount() + half) return o.result;
