@@ -134,8 +134,7 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
     const Target target(at);
     const Job job{input, at, target, strategy, budget, &limits, minEdge2};
     Refiner refiner(s, job);
-    AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), refiner.relocation(),
-                         moves);
+    AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), moves);
     if (!descent.run()) break;
     met = s;
     reached = level;

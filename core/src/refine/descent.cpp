@@ -156,7 +156,6 @@ bool AngleDescent::optimiseFree(uint32_t v) {
   const double start[2] = {T.point(v)[0], T.point(v)[1]};
   double best[2] = {start[0], start[1]};
   bool bestValid = margins(best_);
-  first_ = best_;
   double mean[2] = {0, 0}, odt[2] = {0, 0}, area = 0, nearest2 = INFINITY;
   for (uint32_t t : star_) {
     const uint32_t* c = &T.tri[3 * t];
@@ -249,12 +248,6 @@ size_t AngleDescent::smooth() {
     moved += optimise(v);
   }
   return moved;
-}
-
-size_t AngleDescent::missed() const {
-  size_t count = 0;
-  for (uint32_t t = 0; t < s_.T.triangleSlots(); ++t) count += job_.target.misses(s_, t);
-  return count;
 }
 
 // How far the domain's triangles are from the target in all: the sum of their negative

@@ -1,22 +1,25 @@
-// Bounds below 90 degrees: the largest angle brought down by moving points, not only by adding
-// them. Delaunay refinement toward a bound under 90 need not end (the circumcentre of a
-// triangle whose largest angle is 80 degrees makes edges shorter than the triangle's own, and
-// so on), so the descent works on a mesh of good shape and alternates:
-//  1. every Steiner point moved to where the largest angle of its star is smallest (a free
-//     point within its link, a point on a segment along the segment), each move followed by
-//     Delaunay flips around it;
-//  2. for each triangle still over the bound one point more: its circumcentre, or a split of
-//     the subsegment that point would encroach (Insertion's rules).
-// It stops when every triangle meets the target, when rounds stop lowering the number of
-// triangles that miss it, or at the Steiner limit or the budget.
+// The descent at one bound below 90 degrees (below90.h runs it from a few starts and down
+// through the bounds): the largest angle brought down by moving points as much as by adding
+// them. Rounds of:
+//  1. smoothing: every Steiner point moved to where its star is best (stars compared by their
+//     triangles' margins to the bound, smallest first: leximin), a free point by a pattern
+//     search, a point on a segment along it; then flips that lower the larger largest angle of
+//     two triangles (Delaunay flips would undo the moves: an acute mesh is Delaunay anyway);
+//  2. moves: for each triangle still over the bound, the first move that lowers the total
+//     violation once the points around it are smoothed again (a point at an equilateral apex
+//     or on the bisector of a wide corner at a vertex that cannot move, the opposite edge
+//     split, the circumcentre, a Steiner vertex removed); once single moves stall, a move that
+//     does not pay gets a second at the worst triangle near it. What does not pay is undone.
+// It stops when every triangle meets the target, when rounds stop lowering the violation, at
+// its move budget, the Steiner limit or the run's budget.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "boundary.h"
 #include "insertion.h"
 #include "job.h"
-#include "relocate.h"
 #include "state.h"
 
 namespace acutemesh::detail {
@@ -26,17 +29,12 @@ class AngleDescent {
   // `moves`: how many more moves (step 2) may be tried, counted down across descents (a work
   // budget that makes the same mesh on every machine, as a time limit would not).
   AngleDescent(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
-               Relocation& relocation, uint64_t& moves)
-      : s_(s),
-        job_(job),
-        insertion_(insertion),
-        boundary_(boundary),
-        relocation_(relocation),
-        movesLeft_(moves) {}
+               uint64_t& moves)
+      : s_(s), job_(job), insertion_(insertion), boundary_(boundary), movesLeft_(moves) {}
 
   // Rounds as above; true if every triangle of the domain then meets the target.
   bool run();
-  // One sweep of step 1 over every Steiner point; the number of points moved.
+  // One sweep of smoothing over every Steiner point; the number of points moved.
   size_t smooth();
 
  private:
@@ -66,21 +64,19 @@ class AngleDescent {
   uint32_t longestEdge(uint32_t t) const;
   size_t flipPass();
   bool flipIfBetter(uint32_t e);
-  size_t missed() const;
 
   RefineState& s_;
   const Job& job_;
   Insertion& insertion_;
   Boundary& boundary_;
-  Relocation& relocation_;
   uint64_t& movesLeft_;
   // The star of the vertex being moved: its triangles, and whether each is in the domain.
   std::vector<uint32_t> star_;
   std::vector<uint8_t> starInside_;
   uint32_t seg_[2] = {kNone, kNone};  // its neighbours along its segment (segment points)
   uint32_t segment_ = kNone;
-  std::vector<double> best_, try_, first_;  // margins (scratch)
-  std::vector<RefineState> saved_;          // fix()'s, one per depth
+  std::vector<double> best_, try_;  // margins (scratch)
+  std::vector<RefineState> saved_;  // fix()'s, one per depth
   std::vector<uint32_t> touched_, near_;
 };
 

@@ -40,7 +40,6 @@ class Refiner {
   Reduce& reduce() { return reduce_; }
   Insertion& insertion() { return insertion_; }
   Boundary& boundary() { return boundary_; }
-  Relocation& relocation() { return relocation_; }
   Polish& polisher() { return polish_; }
 
  private:
