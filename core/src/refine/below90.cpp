@@ -10,6 +10,7 @@
 #include "geometry.h"
 #include "refiner.h"
 #include "strategies.h"
+#include "threads.h"
 
 namespace acutemesh::detail {
 namespace {
@@ -175,26 +176,51 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
   // (A domain whose floor is within a hair of 90 degrees leaves auto nothing to gain.)
   if (portableCos(lowest * kDegree) <= best.cosLargest) return finish({});
   const RefineState acute = best.state;
-  for (Start from : kStarts) {
-    if (best.met || budget.stop()) break;
+  // One start's descent; false if it could not start (the direct refinement missed).
+  auto run = [&](Start from, const Options& opts, Candidate& out) {
     RefineState s;
     if (from == Start::Direct) {
       // Acute refinement to the bound itself, or to kDirectFrom where the bound is lower
       // (below it the repairs do not end); the descent goes on from there.
-      Options direct = options;
+      Options direct = opts;
       direct.maxAngle = std::max(lowest, kDirectFrom);
-      refineWithStrategies(start, input, direct, budget, cap, s, exact);
-      if (Target(direct).anyMissed(s)) continue;
+      std::vector<ExactVertex> none;
+      refineWithStrategies(start, input, direct, budget, cap, s, none);
+      if (Target(direct).anyMissed(s)) return false;
     } else if (from == Start::Quality || from == Start::QualityFans) {
-      s = qualityMesh(start, input, options, budget, cap, kDescentMinAngle,
-                      from == Start::QualityFans);
+      s = qualityMesh(start, input, opts, budget, cap, kDescentMinAngle, from == Start::QualityFans);
     } else {
       s = acute;
     }
     const double share = 1.0 / double(std::size(kStarts));
-    Candidate c = descend(std::move(s), input, options, budget, cap, lowest,
-                          from == Start::AcuteGraded, share * double(int(from)), share);
-    if (c.betterThan(best)) best = std::move(c);
+    out = descend(std::move(s), input, opts, budget, cap, lowest, from == Start::AcuteGraded,
+                  share * double(int(from)), share);
+    return true;
+  };
+  // The starts two at a time, the better of each pair kept (the direct refinement meets 85
+  // degrees, but often with more points than the acute mesh's descent), until a pair meets the
+  // bound. Where there are threads the pair runs at once (the second's progress unreported):
+  // the same mesh either way.
+  constexpr size_t count = std::size(kStarts), batch = 2;
+  for (size_t i = 0; i < count && !best.met && !budget.stop(); i += batch) {
+    const size_t n = std::min(batch, count - i);
+    std::vector<Candidate> results(n);
+    std::vector<char> ran(n, 0);
+#ifdef ACUTEMESH_THREADS
+    if (threadsFor(options) > 1) {
+      Options quiet = options;
+      quiet.progress = nullptr;
+      std::vector<std::thread> helpers;
+      for (size_t k = 1; k < n; ++k)
+        helpers.emplace_back([&, k] { ran[k] = run(kStarts[i + k], quiet, results[k]); });
+      ran[0] = run(kStarts[i], options, results[0]);
+      for (std::thread& helper : helpers) helper.join();
+    }
+#endif
+    for (size_t k = 0; k < n; ++k)
+      if (!ran[k]) ran[k] = run(kStarts[i + k], options, results[k]);
+    for (size_t k = 0; k < n; ++k)
+      if (ran[k] && results[k].betterThan(best)) best = std::move(results[k]);
   }
   if (best.met || automatic) return finish({});
   const double largest = std::acos(std::max(-1.0, std::min(1.0, best.cosLargest))) * 180 / M_PI;
