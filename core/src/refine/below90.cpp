@@ -113,8 +113,8 @@ RefineState qualityMesh(const RefineState& from, const Pslg& input, const Option
 Candidate descend(RefineState s, const Pslg& input, const Options& options, const Budget& budget,
                   uint32_t steinerCap, double lowest, bool graded, double done, double share) {
   RunLimits limits;
-  limits.steinerLimit = uint32_t(std::min<double>(s.T.vertexCount() + double(steinerCap),
-                                                  double(kMaxVertices)));
+  limits.steinerLimit =
+      uint32_t(std::min<double>(s.T.vertexCount() + double(steinerCap), double(kMaxVertices)));
   const Strategy strategy;
   const double minEdge2 = smallestEdge2(input);
   RefineState met;
@@ -126,7 +126,8 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
     if (budget.stop()) break;
     // (Progress: the starts in turn, each its bounds in turn.)
     if (options.progress)
-      options.progress({"improve", done + share * double(i) / double(levels.size()), s.T.vertexCount()});
+      options.progress(
+          {"improve", done + share * double(i) / double(levels.size()), s.T.vertexCount()});
     if (graded)
       s = qualityMesh(s, input, options, budget, steinerCap,
                       std::min(180 - 2 * level + kGradedRoom, kDescentMinAngle), false);
@@ -188,7 +189,8 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
       refineWithStrategies(start, input, direct, budget, cap, s, none);
       if (Target(direct).anyMissed(s)) return false;
     } else if (from == Start::Quality || from == Start::QualityFans) {
-      s = qualityMesh(start, input, opts, budget, cap, kDescentMinAngle, from == Start::QualityFans);
+      s = qualityMesh(start, input, opts, budget, cap, kDescentMinAngle,
+                      from == Start::QualityFans);
     } else {
       s = acute;
     }

@@ -2,19 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "params.h"
 
 namespace acutemesh::detail {
 namespace {
 
-constexpr double kInvalid = -std::numeric_limits<double>::infinity();
-
 // The eight directions of the pattern search (unit length).
 constexpr double kDiag = 0.70710678118654752;
-constexpr double kDirections[8][2] = {{1, 0},      {0, 1},      {-1, 0},      {0, -1},
-                                      {kDiag, kDiag}, {-kDiag, kDiag}, {-kDiag, -kDiag}, {kDiag, -kDiag}};
+constexpr double kDirections[8][2] = {{1, 0},           {0, 1},         {-1, 0},
+                                      {0, -1},          {kDiag, kDiag}, {-kDiag, kDiag},
+                                      {-kDiag, -kDiag}, {kDiag, -kDiag}};
 
 }  // namespace
 
@@ -63,8 +61,7 @@ bool AngleDescent::margins(std::vector<double>& out) const {
     }
     if (!starInside_[i]) continue;
     const double bcx = c[0] - b[0], bcy = c[1] - b[1];
-    const double la = bcx * bcx + bcy * bcy, lb = acx * acx + acy * acy,
-                 lc = abx * abx + aby * aby;
+    const double la = bcx * bcx + bcy * bcy, lb = acx * acx + acy * acy, lc = abx * abx + aby * aby;
     // Cosines at a, b, c from the squared sides (law of cosines).
     const double ca = (lb + lc - la) / (2 * std::sqrt(lb * lc)),
                  cb = (la + lc - lb) / (2 * std::sqrt(la * lc)),
@@ -212,7 +209,8 @@ bool AngleDescent::optimiseOnSegment(uint32_t v) {
   bool movedAtAll = false;
   if (!(hi - lo > 0 && hi - lo < INFINITY)) return false;
   int steps = 0;
-  for (double h = kDescentStep * (hi - lo); h > kDescentFinestStep * (hi - lo) && ++steps < kDescentSearchSteps;) {
+  for (double h = kDescentStep * (hi - lo);
+       h > kDescentFinestStep * (hi - lo) && ++steps < kDescentSearchSteps;) {
     const double from = best;
     bool moved = false;
     for (double t : {from - h, from + h}) {
@@ -301,7 +299,10 @@ void AngleDescent::smoothAround(const std::vector<uint32_t>& touched) {
         bool flipped = false;
         uint32_t e0 = T2.vertexEdge[v], e = e0;
         do {
-          if (flipIfBetter(next(e))) { flipped = true; break; }
+          if (flipIfBetter(next(e))) {
+            flipped = true;
+            break;
+          }
           e = T2.opp[prev(e)];
         } while (e != e0);
         if (!flipped) break;
@@ -467,7 +468,8 @@ size_t AngleDescent::repair(int depth) {
   std::vector<Bad> bad;
   const Triangulation& T = s_.T;
   for (uint32_t t = 0; t < T.triangleSlots(); ++t)
-    if (job_.target.misses(s_, t)) bad.push_back({t, T.tri[3 * t], T.tri[3 * t + 1], T.tri[3 * t + 2]});
+    if (job_.target.misses(s_, t))
+      bad.push_back({t, T.tri[3 * t], T.tri[3 * t + 1], T.tri[3 * t + 2]});
   double now = violation();
   size_t kept = 0;
   for (const Bad& x : bad) {
