@@ -224,12 +224,17 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
     for (size_t k = 0; k < n; ++k)
       if (ran[k] && results[k].betterThan(best)) best = std::move(results[k]);
   }
-  if (best.met || automatic) return finish({});
+  // Auto has no bound to miss, but a run cut short says so, as any other does. (For a bound,
+  // mesh() adds what every angle is certified below.)
+  if (best.met || (automatic && !budget.stop())) return finish({});
   const double largest = std::acos(std::max(-1.0, std::min(1.0, best.cosLargest))) * 180 / M_PI;
-  return finish({budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
-                 "the bound of " + degreesText(options.maxAngle) +
-                     " was not reached; the mesh is acute, its largest angle " +
-                     degreesText(largest)});
+  const std::string aim =
+      automatic ? "the lowest bound was found (the largest angle is " + degreesText(largest) + ")"
+                : "the bound of " + degreesText(options.maxAngle) + " was reached";
+  if (budget.cancelled()) return finish({Status::Cancelled, "cancelled before " + aim});
+  if (budget.stop()) return finish({Status::TargetNotMet, "the time limit came before " + aim});
+  return finish(
+      {Status::TargetNotMet, "the bound of " + degreesText(options.maxAngle) + " was not reached"});
 }
 
 }  // namespace acutemesh::detail
