@@ -1,0 +1,253 @@
+// Acute meshes below 90 degrees end to end (refine/below90, refine/descent): on every fixture
+// and on turned, mirrored and scaled copies of it, each result is valid (validate()) and its
+// certificate is re-checked here corner by corner, exactly and apart from the core's AngleCheck
+// (big integers of exact_reference.h behind a floating-point filter). Also: a time limit or a
+// cancel mid-descent, a small Steiner budget, and the same mesh on any number of threads.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <thread>
+
+#include "acutemesh/acutemesh.h"
+#include "exact_reference.h"
+#include "fixtures.h"
+
+using namespace acutemesh;
+
+namespace {
+
+using fixtures::kData;
+using fixtures::kSyntheticCgshop;
+
+// --- an exact check of "every angle below B", independent of the core's ----------------------
+
+// A double q >= cos^2 B, so that cos^2 of a corner above q proves the corner below B. 90 - B is
+// exact and sin of it within an ulp or two, its square within a few more: 2e-15 above that is
+// above cos^2 B for sure. It stays below the core's own q (cos^2 B + 1e-14 relative), so a
+// corner the core certifies is not refused here for rounding.
+double cos2Above(double degrees) {
+  const double s = std::sin((90 - degrees) * M_PI / 180);
+  return s * s * (1 + 2e-15);
+}
+
+// Whether the angle at a of triangle a, b, c is below `degrees` (q = cos2Above(degrees); at 90,
+// whether the dot product is positive). A corner whose angle, from atan2 of doubles, is more
+// than 1e-9 degrees from the bound is decided by it: the rounding of the differences and of
+// atan2 moves it by about 1e-13 degrees. Nearer ones are decided with big integers: the dot
+// product u.v positive and (u.v)^2 > q |u|^2 |v|^2.
+bool cornerBelow(const double* a, const double* b, const double* c, double degrees, double q) {
+  const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+  const double angle = std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI;
+  if (angle < degrees - 1e-9) return true;
+  if (angle > degrees + 1e-9) return false;
+  if (degrees >= 90) return exactref::dot2dSign(a, b, c) > 0;
+  using exactref::BigInt;
+  const auto v = exactref::toCommonScale({a[0], a[1], b[0], b[1], c[0], c[1]});
+  const BigInt bx = v[2] - v[0], by = v[3] - v[1], cx = v[4] - v[0], cy = v[5] - v[1];
+  const BigInt dot = bx * cx + by * cy;
+  if (dot.sign() <= 0) return false;
+  int e = 0;
+  const double f = std::frexp(q, &e);  // q = f 2^e, f in [0.5, 1), e <= 0: q = m / 2^(53 - e)
+  const BigInt m(int64_t(std::ldexp(f, 53)));
+  const BigInt lengths = (bx * bx + by * by) * (cx * cx + cy * cy);
+  return ((dot * dot).shl(53 - e) - m * lengths).sign() > 0;
+}
+
+// The corners of `m` that are not below `degrees` (0: every angle below it).
+size_t cornersNotBelow(const Mesh& m, double degrees) {
+  const double q = cos2Above(degrees);
+  size_t n = 0;
+  for (size_t t = 0; t < m.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const double* a = &m.points[2 * size_t(m.triangles[3 * t + k])];
+      const double* b = &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])];
+      const double* c = &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])];
+      n += !cornerBelow(a, b, c, degrees, q);
+    }
+  return n;
+}
+
+// Obtuse corners (exact dot-product sign below 0, behind the same filter).
+size_t obtuseCorners(const Mesh& m) {
+  size_t n = 0;
+  for (size_t t = 0; t < m.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const double* a = &m.points[2 * size_t(m.triangles[3 * t + k])];
+      const double* b = &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])];
+      const double* c = &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])];
+      // Below 90 by more than the filter's margin, or else the exact sign.
+      const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+      if (std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI < 90 - 1e-9) continue;
+      n += exactref::dot2dSign(a, b, c) < 0;
+    }
+  return n;
+}
+
+// The smallest angle of `m` (floating point, degrees).
+double smallestAngle(const Mesh& m) {
+  double smallest = 180;
+  for (size_t t = 0; t < m.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const double* a = &m.points[2 * size_t(m.triangles[3 * t + k])];
+      const double* b = &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])];
+      const double* c = &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])];
+      const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+      smallest = std::min(smallest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI);
+    }
+  return smallest;
+}
+
+// --- fixtures and their copies ----------------------------------------------------------------
+
+struct Fixture {
+  std::string path;
+  Input input;
+  Options base;  // fill rule, exact segments: as the CLI meshes the file
+};
+
+Fixture fixture(const std::string& path) {
+  Fixture f{path, fixtures::load(path), {}};
+  if (f.input.hasRings) f.base.fill = FillRule::NonZero;
+  f.base.exactSegments = path.find(".instance.json") != std::string::npos;
+  f.base.threads = 1;
+  return f;
+}
+
+// Copies that must mesh as well as the original: turned by 30 degrees (coordinates rounded),
+// mirrored, and scaled by 2^-20 and 2^30 (exact).
+enum Copy { kSame, kTurned30, kMirrored, kTiny, kHuge, kCopies };
+const char* const kCopyName[kCopies] = {"", " turned 30", " mirrored", " scaled 2^-20", " scaled 2^30"};
+
+Pslg copyOf(const Pslg& in, Copy copy) {
+  Pslg out = in;
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (std::vector<double>* xy : {&out.points, &out.holes})
+    for (size_t i = 0; i + 1 < xy->size(); i += 2) {
+      const double x = (*xy)[i], y = (*xy)[i + 1];
+      switch (copy) {
+        case kTurned30: (*xy)[i] = c * x - s * y, (*xy)[i + 1] = s * x + c * y; break;
+        case kMirrored: (*xy)[i] = -x; break;
+        case kTiny: (*xy)[i] = std::ldexp(x, -20), (*xy)[i + 1] = std::ldexp(y, -20); break;
+        case kHuge: (*xy)[i] = std::ldexp(x, 30), (*xy)[i + 1] = std::ldexp(y, 30); break;
+        default: break;
+      }
+    }
+  return out;
+}
+
+// kAutoMaxAngle, 90 or a bound below it: the acute mesh's certificate. `acute` is the run at 90
+// of the same input (null for that run): no result is worse than it.
+Result expectAcute(const Pslg& in, const Options& base, double bound, const Result* acute,
+                   const std::string& what) {
+  Options o = base;
+  o.mode = Mode::Acute;
+  o.maxAngle = bound;
+  Result r = mesh(in, o);
+  const std::string at = what + " at " + (bound == kAutoMaxAngle ? "auto" : std::to_string(bound));
+  EXPECT_NE(r.status, Status::BadInput) << at << ": " << r.message;
+  EXPECT_EQ(fixtures::validationErrors(in, o, r.mesh), "") << at;
+  EXPECT_TRUE(r.stats.certified) << at;
+  EXPECT_GT(r.stats.angleBound, 60) << at;
+  EXPECT_LE(r.stats.angleBound, 90) << at;
+  EXPECT_EQ(cornersNotBelow(r.mesh, r.stats.angleBound), 0u) << at << ": angleBound " << r.stats.angleBound;
+  if (acute) {
+    EXPECT_LE(r.stats.maxAngle, acute->stats.maxAngle) << at << ": worse than the acute mesh";
+  }
+  if (bound == kAutoMaxAngle) {
+    EXPECT_EQ(r.status, Status::Ok) << at << ": " << r.message;
+    EXPECT_TRUE(r.stats.targetMet) << at;
+    EXPECT_LT(r.stats.angleBound, 90) << at << ": no lower than the acute mesh's 90";
+    EXPECT_EQ(r.stats.angleBound * 10, std::round(r.stats.angleBound * 10)) << at;
+  } else if (r.stats.targetMet) {
+    EXPECT_EQ(r.status, Status::Ok) << at << ": " << r.message;
+    EXPECT_EQ(r.stats.angleBound, bound) << at;
+  } else {
+    // Missed: said, and true (some corner is not below the bound).
+    EXPECT_EQ(r.status, Status::TargetNotMet) << at;
+    EXPECT_FALSE(r.message.empty()) << at;
+    EXPECT_FALSE(r.stats.missedTriangles.empty()) << at;
+    EXPECT_GT(r.stats.angleBound, bound) << at;
+    EXPECT_GT(cornersNotBelow(r.mesh, bound), 0u) << at << ": said to miss " << bound;
+  }
+  return r;
+}
+
+// Non-obtuse and quality (default 20 degrees) certificates of the same copy. A domain corner
+// under 20 degrees cannot be met by quality refinement: then the miss is said.
+void expectNonObtuseAndQuality(const Pslg& in, const Options& base, const std::string& what) {
+  Options o = base;
+  o.mode = Mode::NonObtuse;
+  Result n = mesh(in, o);
+  EXPECT_EQ(n.status, Status::Ok) << what << " nonobtuse: " << n.message;
+  EXPECT_TRUE(n.stats.certified) << what << " nonobtuse";
+  EXPECT_EQ(fixtures::validationErrors(in, o, n.mesh), "") << what << " nonobtuse";
+  // (Exact feet, where they are used, are certified at their rationals, not at these doubles.)
+  if (n.mesh.exactPoints.empty()) {
+    EXPECT_EQ(obtuseCorners(n.mesh), 0u) << what << " nonobtuse";
+  }
+  o.mode = Mode::Quality;
+  Result q = mesh(in, o);
+  EXPECT_EQ(fixtures::validationErrors(in, o, q.mesh), "") << what << " quality";
+  if (q.stats.smallestDomainAngle >= kQualityDefaultMinAngle) {
+    EXPECT_EQ(q.status, Status::Ok) << what << " quality: " << q.message;
+    EXPECT_GE(smallestAngle(q.mesh), kQualityDefaultMinAngle * (1 - 1e-12)) << what << " quality";
+  } else {
+    EXPECT_EQ(q.status, q.stats.targetMet ? Status::Ok : Status::TargetNotMet) << what << " quality";
+  }
+}
+
+// Every copy of the fixture but those in `skip` (bits 1 << Copy): acute at 90 and at each of
+// `bounds`, non-obtuse, quality; acute at kAutoMaxAngle too on the copies in `autoOn`.
+void expectEveryCertificate(const std::string& path, std::vector<double> bounds, unsigned autoOn,
+                            unsigned skip = 0) {
+  const Fixture f = fixture(path);
+  for (int copy = kSame; copy < kCopies; ++copy) {
+    if (skip & (1u << copy)) continue;
+    const Pslg in = copyOf(f.input.pslg, Copy(copy));
+    const std::string what = path.substr(path.rfind('/') + 1) + kCopyName[copy];
+    const Result acute = expectAcute(in, f.base, 90, nullptr, what);
+    ASSERT_EQ(acute.status, Status::Ok) << what << ": " << acute.message;
+    EXPECT_EQ(acute.stats.angleBound, 90) << what;
+    for (double bound : bounds) expectAcute(in, f.base, bound, &acute, what);
+    if (autoOn & (1u << copy)) expectAcute(in, f.base, kAutoMaxAngle, &acute, what);
+    expectNonObtuseAndQuality(in, f.base, what);
+  }
+}
+
+constexpr unsigned kOriginal = 1u << kSame, kEveryCopy = (1u << kCopies) - 1;
+
+}  // namespace
+
+// --- every fixture, its copies, several bounds --------------------------------------------------
+// (auto costs 0.4 to 4.5 s a run natively: it runs on the cheaper fixtures, on all copies of one.
+// AngleBound.AutoSaysTheBoundReached runs it on A.poly and the plate too.)
+
+// A.poly turned by 30 degrees: see Below90.DISABLED_LetterATurned30.
+TEST(Below90, LetterA) {
+  expectEveryCertificate(kData + "/A.poly", {85, 82}, kOriginal, 1u << kTurned30);
+}
+TEST(Below90, Plate) { expectEveryCertificate(kData + "/plate.poly", {85, 82}, 0); }
+TEST(Below90, Airfoil) { expectEveryCertificate(kData + "/naca0012.poly", {85}, 0); }
+TEST(Below90, AcuteText) { expectEveryCertificate(kData + "/acute-text.json", {85, 82}, 0); }
+TEST(Below90, CgshopOrtho) {
+  expectEveryCertificate(kSyntheticCgshop + "/ortho_10_synthetic.instance.json", {85, 82}, kOriginal);
+}
+// Its smallest corner, 16.8 degrees, sets a floor of 81.6: 82 is just above it.
+TEST(Below90, CgshopSimplePolygon) {
+  expectEveryCertificate(kSyntheticCgshop + "/simple-polygon_40_synthetic.instance.json", {85, 82},
+                         kEveryCopy);
+}
+TEST(Below90, CgshopPointSet) {
+  expectEveryCertificate(kSyntheticCgshop + "/point-set_60_synthetic.instance.json", {85}, 0);
+}
+
+// Today acute, non-obtuse and quality refinement all give up on A.poly turned by 30 degrees (9
+// triangles left, one of 148 degrees, after some 40 points; also at 10, 20 and 60 degrees, not
+// at 45 or 90): a bug older than the bounds below 90. Enable when it is fixed.
+TEST(Below90, DISABLED_LetterATurned30) {
+  expectEveryCertificate(kData + "/A.poly", {85, 82}, 1u << kTurned30,
+                         kEveryCopy & ~(1u << kTurned30));
+}
