@@ -1,9 +1,9 @@
 // Acute meshes below 90 degrees end to end (refine/below90, refine/descent): on every fixture
 // and on turned, mirrored and scaled copies of it, each result is valid (validate()) and its
 // certificate is re-checked here corner by corner, exactly and apart from the core's AngleCheck
-// (big integers of exact_reference.h behind a floating-point filter; the exact dot-product sign
-// of predicates.h, which test_predicates checks against those big integers, at 90 degrees). Also: a time limit or a
-// cancel mid-descent, a small Steiner budget, and the same mesh on any number of threads.
+// (big integers of exact_reference.h behind a floating-point filter; at 90 degrees the exact
+// dot-product sign of predicates.h, which test_predicates checks against those big integers).
+// Also: a time limit or a cancel mid-descent, a Steiner budget, the same mesh on any threads.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -36,8 +36,8 @@ double cos2Above(double degrees) {
 }
 
 // Whether the angle at a of triangle a, b, c is below `degrees` (q = cos2Above(degrees); at 90,
-// whether the dot product is positive, exactly). A corner whose angle, from atan2 of doubles, is more
-// than 1e-9 degrees from the bound is decided by it: the rounding of the differences and of
+// whether the dot product is positive, exactly). A corner whose angle, from atan2 of doubles, is
+// more than 1e-9 degrees from the bound is decided by it: the rounding of the differences and of
 // atan2 moves it by about 1e-13 degrees. Nearer ones are decided with big integers: the dot
 // product u.v positive and (u.v)^2 > q |u|^2 |v|^2.
 bool cornerBelow(const double* a, const double* b, const double* c, double degrees, double q) {
@@ -94,7 +94,8 @@ double smallestAngle(const Mesh& m) {
       const double* b = &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])];
       const double* c = &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])];
       const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
-      smallest = std::min(smallest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI);
+      smallest = std::min(smallest,
+                          std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI);
     }
   return smallest;
 }
@@ -102,13 +103,13 @@ double smallestAngle(const Mesh& m) {
 // --- fixtures and their copies ----------------------------------------------------------------
 
 struct Fixture {
-  std::string path;
   Input input;
-  Options base;  // fill rule, exact segments: as the CLI meshes the file
+  Options
+      base;  // non-zero fill for rings (as test_refine), exact segments for CG:SHOP (as the CLI)
 };
 
 Fixture fixture(const std::string& path) {
-  Fixture f{path, fixtures::load(path), {}};
+  Fixture f{fixtures::load(path), {}};
   if (f.input.hasRings) f.base.fill = FillRule::NonZero;
   f.base.exactSegments = path.find(".instance.json") != std::string::npos;
   f.base.threads = 1;
@@ -118,7 +119,8 @@ Fixture fixture(const std::string& path) {
 // Copies that must mesh as well as the original: turned by 30 degrees (coordinates rounded),
 // mirrored, and scaled by 2^-20 and 2^30 (exact).
 enum Copy { kSame, kTurned30, kMirrored, kTiny, kHuge, kCopies };
-const char* const kCopyName[kCopies] = {"", " turned 30", " mirrored", " scaled 2^-20", " scaled 2^30"};
+const char* const kCopyName[kCopies] = {"", " turned 30", " mirrored", " scaled 2^-20",
+                                        " scaled 2^30"};
 
 Pslg copyOf(const Pslg& in, Copy copy) {
   Pslg out = in;
@@ -127,11 +129,20 @@ Pslg copyOf(const Pslg& in, Copy copy) {
     for (size_t i = 0; i + 1 < xy->size(); i += 2) {
       const double x = (*xy)[i], y = (*xy)[i + 1];
       switch (copy) {
-        case kTurned30: (*xy)[i] = c * x - s * y, (*xy)[i + 1] = s * x + c * y; break;
-        case kMirrored: (*xy)[i] = -x; break;
-        case kTiny: (*xy)[i] = std::ldexp(x, -20), (*xy)[i + 1] = std::ldexp(y, -20); break;
-        case kHuge: (*xy)[i] = std::ldexp(x, 30), (*xy)[i + 1] = std::ldexp(y, 30); break;
-        default: break;
+        case kTurned30:
+          (*xy)[i] = c * x - s * y, (*xy)[i + 1] = s * x + c * y;
+          break;
+        case kMirrored:
+          (*xy)[i] = -x;
+          break;
+        case kTiny:
+          (*xy)[i] = std::ldexp(x, -20), (*xy)[i + 1] = std::ldexp(y, -20);
+          break;
+        case kHuge:
+          (*xy)[i] = std::ldexp(x, 30), (*xy)[i + 1] = std::ldexp(y, 30);
+          break;
+        default:
+          break;
       }
     }
   return out;
@@ -151,7 +162,8 @@ Result expectAcute(const Pslg& in, const Options& base, double bound, const Resu
   EXPECT_TRUE(r.stats.certified) << at;
   EXPECT_GT(r.stats.angleBound, 60) << at;
   EXPECT_LE(r.stats.angleBound, 90) << at;
-  EXPECT_EQ(cornersNotBelow(r.mesh, r.stats.angleBound), 0u) << at << ": angleBound " << r.stats.angleBound;
+  EXPECT_EQ(cornersNotBelow(r.mesh, r.stats.angleBound), 0u)
+      << at << ": angleBound " << r.stats.angleBound;
   if (acute) {
     EXPECT_LE(r.stats.maxAngle, acute->stats.maxAngle) << at << ": worse than the acute mesh";
   }
@@ -194,7 +206,8 @@ void expectNonObtuseAndQuality(const Pslg& in, const Options& base, const std::s
     EXPECT_EQ(q.status, Status::Ok) << what << " quality: " << q.message;
     EXPECT_GE(smallestAngle(q.mesh), kQualityDefaultMinAngle * (1 - 1e-12)) << what << " quality";
   } else {
-    EXPECT_EQ(q.status, q.stats.targetMet ? Status::Ok : Status::TargetNotMet) << what << " quality";
+    EXPECT_EQ(q.status, q.stats.targetMet ? Status::Ok : Status::TargetNotMet)
+        << what << " quality";
   }
 }
 
@@ -230,8 +243,12 @@ TEST(Below90, TheCheckHereIsExact) {
       for (int scale : {-20, 0, 30}) {
         const double r = std::ldexp(1.0, scale);
         Mesh m;
-        m.points = {r * 0.25, r * 0.5, r * (0.25 + std::cos(0.3)), r * (0.5 + std::sin(0.3)),
-                    r * (0.25 + std::cos(0.3 + apex)), r * (0.5 + std::sin(0.3 + apex))};
+        m.points = {r * 0.25,
+                    r * 0.5,
+                    r * (0.25 + std::cos(0.3)),
+                    r * (0.5 + std::sin(0.3)),
+                    r * (0.25 + std::cos(0.3 + apex)),
+                    r * (0.5 + std::sin(0.3 + apex))};
         m.triangles = {0, 1, 2};
         // Its apex as built (the rounding of the points moves it by ~1e-14 degrees).
         const size_t want = delta < 0 ? 0 : 1;
@@ -254,7 +271,8 @@ TEST(Below90, Plate) { expectEveryCertificate(kData + "/plate.poly", {85, 82}, 0
 TEST(Below90, Airfoil) { expectEveryCertificate(kData + "/naca0012.poly", {85}, 0); }
 TEST(Below90, AcuteText) { expectEveryCertificate(kData + "/acute-text.json", {85}, 0); }
 TEST(Below90, CgshopOrtho) {
-  expectEveryCertificate(kSyntheticCgshop + "/ortho_10_synthetic.instance.json", {85, 82}, kOriginal);
+  expectEveryCertificate(kSyntheticCgshop + "/ortho_10_synthetic.instance.json", {85, 82},
+                         kOriginal);
 }
 // Its smallest corner, 16.8 degrees, sets a floor of 81.6: 82 is just above it.
 TEST(Below90, CgshopSimplePolygon) {
@@ -287,7 +305,8 @@ void expectStoppedShort(const Pslg& in, const Options& o, const Result& r, const
   EXPECT_FALSE(r.stats.targetMet) << what;
   EXPECT_TRUE(r.stats.certified) << what;
   EXPECT_GT(r.stats.angleBound, o.maxAngle) << what;
-  EXPECT_EQ(cornersNotBelow(r.mesh, r.stats.angleBound), 0u) << what << ": angleBound " << r.stats.angleBound;
+  EXPECT_EQ(cornersNotBelow(r.mesh, r.stats.angleBound), 0u)
+      << what << ": angleBound " << r.stats.angleBound;
   EXPECT_LE(r.stats.maxAngle, acute.stats.maxAngle) << what << ": worse than the acute mesh";
 }
 
@@ -327,7 +346,8 @@ TEST(Below90, CancelFromAnotherThreadMidDescent) {
   std::atomic<bool> cancel{false};
   o.cancel = &cancel;
   std::thread canceller([&] {
-    std::this_thread::sleep_for(std::chrono::duration<double>(10 * std::max(acute.stats.seconds, 1e-3)));
+    std::this_thread::sleep_for(
+        std::chrono::duration<double>(10 * std::max(acute.stats.seconds, 1e-3)));
     cancel = true;
   });
   Result r = mesh(in, o);
