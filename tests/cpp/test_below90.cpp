@@ -283,6 +283,15 @@ TEST(Below90, CgshopPointSet) {
   expectEveryCertificate(kSyntheticCgshop + "/point-set_60_synthetic.instance.json", {85}, 0);
 }
 
+// Today auto ends at the acute mesh's 90 here (floor 83.6; 85 is missed too, ~3.5 s a run
+// natively). Enable when the descent gets below 90 on it.
+TEST(Below90, DISABLED_CgshopSimplePolygonExterior20Auto) {
+  const Fixture f =
+      fixture(kSyntheticCgshop + "/simple-polygon-exterior-20_80_synthetic.instance.json");
+  const Result acute = expectAcute(f.input.pslg, f.base, 90, nullptr, "exterior-20_80");
+  expectAcute(f.input.pslg, f.base, kAutoMaxAngle, &acute, "exterior-20_80");
+}
+
 // Today acute, non-obtuse and quality refinement all give up on A.poly turned by 30 degrees (9
 // triangles left, one of 148 degrees, after some 40 points; also at 10, 20 and 60 degrees, not
 // at 45 or 90): a bug older than the bounds below 90. Enable when it is fixed.
