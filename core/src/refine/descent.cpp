@@ -490,17 +490,17 @@ bool AngleDescent::run() {
     const double now = violation();
     if (now == 0) return true;
     if (job_.budget.stop() || job_.limits->reached(s_.T.vertexCount())) return false;
-    // Look-ahead only once single moves stop gaining.
+    // Look-ahead only once single moves stop gaining, deeper while it finds nothing.
     if (now < least * (1 - kDescentGain)) {
       least = now, stale = 0;
     } else if (++stale >= kDescentStaleRounds) {
       return false;
     } else {
-      depth = 2;
+      depth = std::max(depth, 2);
     }
-    if (repair(depth) == 0) {
-      if (depth == 2) return false;
-      depth = 2;
+    while (repair(depth) == 0) {
+      if (depth == kDescentDepth) return false;
+      ++depth;
     }
   }
   return false;

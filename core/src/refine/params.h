@@ -102,6 +102,8 @@ constexpr double kDescentSlack = 0.03;
 constexpr int kDescentLocalSweeps = 2;
 // Moves one descent may try, over all its bounds: this many, and this many per vertex.
 constexpr double kDescentMoves = 2000, kDescentMovesPerVertex = 8;
+// The deepest look-ahead: moves in a row, each at the worst triangle near the last.
+constexpr int kDescentDepth = 3;
 // Rounds per bound at most.
 constexpr int kDescentRounds = 24;
 
