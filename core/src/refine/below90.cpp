@@ -19,17 +19,14 @@ namespace {
 // angle; only exact operations, so that every build compares meshes alike).
 double largestAngleCosine(const RefineState& s) {
   double smallest = 1;
-  double d[3];
   for (uint32_t t = 0; t < s.T.triangleSlots(); ++t) {
     if (!s.T.inDomain(t)) continue;
     const uint32_t* v = &s.T.tri[3 * t];
-    const double *a = s.P(v[0]), *b = s.P(v[1]), *c = s.P(v[2]);
-    const double* p[3] = {a, b, c};
     for (int k = 0; k < 3; ++k) {
-      const double *x = p[k], *y = p[(k + 1) % 3], *z = p[(k + 2) % 3];
-      d[k] = ((y[0] - x[0]) * (z[0] - x[0]) + (y[1] - x[1]) * (z[1] - x[1])) /
-             std::sqrt(dist2(x, y) * dist2(x, z));
-      smallest = std::min(smallest, d[k]);
+      const double *x = s.P(v[k]), *y = s.P(v[(k + 1) % 3]), *z = s.P(v[(k + 2) % 3]);
+      smallest =
+          std::min(smallest, ((y[0] - x[0]) * (z[0] - x[0]) + (y[1] - x[1]) * (z[1] - x[1])) /
+                                 std::sqrt(dist2(x, y) * dist2(x, z)));
     }
   }
   return smallest;
@@ -208,8 +205,10 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
     const size_t n = std::min(batch, count - i);
     std::vector<Candidate> results(n);
     std::vector<char> ran(n, 0);
+    bool together = false;
 #ifdef ACUTEMESH_THREADS
-    if (threadsFor(options) > 1) {
+    together = threadsFor(options) > 1;
+    if (together) {
       Options quiet = options;
       quiet.progress = nullptr;
       std::vector<std::thread> helpers;
@@ -219,8 +218,7 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
       for (std::thread& helper : helpers) helper.join();
     }
 #endif
-    for (size_t k = 0; k < n; ++k)
-      if (!ran[k]) ran[k] = run(kStarts[i + k], options, results[k]);
+    for (size_t k = 0; k < n && !together; ++k) ran[k] = run(kStarts[i + k], options, results[k]);
     for (size_t k = 0; k < n; ++k)
       if (ran[k] && results[k].betterThan(best)) best = std::move(results[k]);
   }
