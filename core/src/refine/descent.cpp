@@ -14,6 +14,14 @@ constexpr double kDirections[8][2] = {{1, 0},           {0, 1},         {-1, 0},
                                       {0, -1},          {kDiag, kDiag}, {-kDiag, kDiag},
                                       {-kDiag, -kDiag}, {kDiag, -kDiag}};
 
+// The cosine of the largest angle of triangle a, b, c (opposite its longest side).
+double largestCosine(const double* a, const double* b, const double* c) {
+  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
+  if (la >= lb && la >= lc) return (lb + lc - la) / (2 * std::sqrt(lb * lc));
+  if (lb >= lc) return (la + lc - lb) / (2 * std::sqrt(la * lc));
+  return (la + lb - lc) / (2 * std::sqrt(la * lb));
+}
+
 }  // namespace
 
 // The star of v in star_ (no ghost in it), and for a point on a segment its neighbours there
@@ -93,7 +101,7 @@ bool AngleDescent::better(const std::vector<double>& a, bool aValid, const std::
 }
 
 // Puts v at p if its star stays a valid triangulation there (exact) with no edge shorter than
-// refinement's smallest, and restores the Delaunay property around it; else v stays.
+// refinement's smallest; else v stays. (No Delaunay flips: flipIfBetter decides the edges.)
 bool AngleDescent::settleAt(uint32_t v, const double* p) {
   Triangulation& T = s_.T;
   double* at = &T.pts[2 * size_t(v)];
@@ -113,16 +121,8 @@ bool AngleDescent::settleAt(uint32_t v, const double* p) {
   return true;
 }
 
-// The cosine of the largest angle of triangle a, b, c.
-static double largestCosine(const double* a, const double* b, const double* c) {
-  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-  if (la >= lb && la >= lc) return (lb + lc - la) / (2 * std::sqrt(lb * lc));
-  if (lb >= lc) return (la + lc - lb) / (2 * std::sqrt(la * lc));
-  return (la + lb - lc) / (2 * std::sqrt(la * lb));
-}
-
-// Flips every edge between two triangles of the domain whose flip lowers the larger of
-// their largest angles; the number flipped.
+// Flips the edge of e if it lies between two triangles of the domain and the flip lowers the
+// larger of their largest angles (the quadrilateral strictly convex: exact).
 bool AngleDescent::flipIfBetter(uint32_t e) {
   Triangulation& T = s_.T;
   const uint32_t f = T.opp[e];
@@ -138,6 +138,7 @@ bool AngleDescent::flipIfBetter(uint32_t e) {
   return true;
 }
 
+// flipIfBetter on every edge once; the number flipped.
 size_t AngleDescent::flipPass() {
   size_t flipped = 0;
   for (uint32_t e = 0; e < 3 * s_.T.triangleSlots(); ++e)
@@ -288,29 +289,33 @@ void AngleDescent::smoothAround(const std::vector<uint32_t>& touched) {
   }
   std::sort(near_.begin(), near_.end());
   near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
-  const Triangulation& T2 = s_.T;
   for (int sweep = 0; sweep < kDescentLocalSweeps; ++sweep) {
     size_t moved = 0;
     for (uint32_t v : near_)
       if (v != kGhost && v >= job_.input.vertexCount()) moved += optimise(v);
-    for (uint32_t v : near_) {
-      if (v == kGhost || T2.vertexEdge[v] == kNone) continue;
-      for (int again = 0; again < 8; ++again) {  // (a flip changes the star: walk it anew)
-        bool flipped = false;
-        uint32_t e0 = T2.vertexEdge[v], e = e0;
-        do {
-          if (flipIfBetter(next(e))) {
-            flipped = true;
-            break;
-          }
-          e = T2.opp[prev(e)];
-        } while (e != e0);
-        if (!flipped) break;
-        ++moved;
-      }
-    }
+    for (uint32_t v : near_)
+      if (v != kGhost && T.vertexEdge[v] != kNone) moved += flipAround(v);
     if (moved == 0) break;
   }
+}
+
+// flipIfBetter on the edges of v's link until none flips (a flip changes the link: it is
+// walked anew each time, at most kFlipWalks times); the number flipped.
+size_t AngleDescent::flipAround(uint32_t v) {
+  constexpr int kFlipWalks = 8;
+  const Triangulation& T = s_.T;
+  size_t flipped = 0;
+  for (int walk = 0; walk < kFlipWalks; ++walk) {
+    uint32_t e0 = T.vertexEdge[v], e = e0;
+    bool any = false;
+    do {
+      any = flipIfBetter(next(e));
+      e = T.opp[prev(e)];
+    } while (!any && e != e0);
+    if (!any) break;
+    ++flipped;
+  }
+  return flipped;
 }
 
 // The edge opposite the largest angle of t.

@@ -64,6 +64,7 @@ class AngleDescent {
   uint32_t longestEdge(uint32_t t) const;
   size_t flipPass();
   bool flipIfBetter(uint32_t e);
+  size_t flipAround(uint32_t v);
 
   RefineState& s_;
   const Job& job_;
