@@ -8,16 +8,12 @@
 // one of $BOUNDS), the same under WORK/runs/cgshop/UID.*, and WORK/runs/acute/ID.BOUND/ when
 // aCute ran. Writes the Markdown report and WORK/cgshop.csv. Environment from max-angle.sh:
 // LOAD_START, ELAPSED, TIME_LIMIT, CGSHOP_LIMIT, PER_CATEGORY, QUICK, BOUNDS.
-import { execSync } from 'node:child_process';
 import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-const argv = process.argv.slice(2);
-const opt = (name) => {
-  const i = argv.indexOf(name);
-  return i >= 0 ? argv[i + 1] : undefined;
-};
+import { cpu, opt, readRun, readText, sh } from './runs.mjs';
+
 const work = opt('--work');
 const cgshopDir = opt('--cgshop') || '';
 const out = opt('--out');
@@ -44,21 +40,6 @@ const ACUTE_MEASURED = {
 };
 
 // --- reading runs ------------------------------------------------------------------------------
-const readText = (f) => (existsSync(f) ? readFileSync(f, 'utf8') : null);
-function readRun(base) {
-  const rcText = readText(`${base}.rc`);
-  if (rcText === null) return null;
-  const run = { rc: Number(rcText.trim()), stats: null, err: (readText(`${base}.err`) || '').trim() };
-  const json = readText(`${base}.json`);
-  if (json && json.trim()) {
-    try {
-      run.stats = JSON.parse(json);
-    } catch (e) {
-      run.parseError = String(e.message);
-    }
-  }
-  return run;
-}
 // The runs of one input: { floor, corner, inputVertices, floor3: { bound, same }, runs: { key: run } }.
 function readInput(base) {
   const runs = {};
@@ -245,14 +226,6 @@ for (const [cat, list] of [...byCat].sort()) {
 writeFileSync(path.join(work, 'cgshop.csv'), `${csv.join('\n')}\n`);
 
 // --- the machine and the report ------------------------------------------------------------------
-const sh = (cmd) => {
-  try {
-    return execSync(cmd, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }).trim();
-  } catch {
-    return '?';
-  }
-};
-const cpu = (readText('/proc/cpuinfo') || '').match(/^model name\s*:\s*(.*)$/m)?.[1] ?? os.cpus()[0]?.model ?? '?';
 const commit = sh('git rev-parse --short HEAD') + (sh('git status --porcelain --untracked-files=no') ? ' (with uncommitted changes)' : '');
 const perCat = env.PER_CATEGORY === 'all' ? 'all instances' : `${env.PER_CATEGORY} per category, spread over its sizes`;
 const lines = [

@@ -8,16 +8,12 @@
 // WORK/runs/cgshop/UID.MODE.K.{json,err,rc} plus the folder's best_known_steiner.csv and
 // acute_baseline_measured.csv. Writes the Markdown report and WORK/cgshop.csv (one line per
 // instance). Environment from refine.sh: LOAD_START, RUNS, CGSHOP_RUNS, TIME_LIMIT, CGSHOP_LIMIT.
-import { execSync } from 'node:child_process';
 import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-const argv = process.argv.slice(2);
-const opt = (name) => {
-  const i = argv.indexOf(name);
-  return i >= 0 ? argv[i + 1] : undefined;
-};
+import { cpu, opt, readRun, readText, sh } from './runs.mjs';
+
 const work = opt('--work');
 const cgshopDir = opt('--cgshop') || '';
 const out = opt('--out');
@@ -52,21 +48,6 @@ const ACUTE_SW = {
 };
 
 // --- reading runs ------------------------------------------------------------------------------
-const readText = (f) => (existsSync(f) ? readFileSync(f, 'utf8') : null);
-function readRun(base) {
-  const rcText = readText(`${base}.rc`);
-  if (rcText === null) return null;
-  const run = { rc: Number(rcText.trim()), stats: null, err: (readText(`${base}.err`) || '').trim() };
-  const json = readText(`${base}.json`);
-  if (json && json.trim()) {
-    try {
-      run.stats = JSON.parse(json);
-    } catch (e) {
-      run.parseError = String(e.message);
-    }
-  }
-  return run;
-}
 const seconds = (r) => r?.stats?.seconds?.total;
 // The run with the smallest seconds.total (the CLI's own clock), and whether the exit
 // statuses of the repeats disagreed.
@@ -358,14 +339,6 @@ if (cgshopDir && existsSync(cgshopDir)) {
 }
 
 // --- machine and provenance --------------------------------------------------------------------
-const sh = (cmd) => {
-  try {
-    return execSync(cmd, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }).trim();
-  } catch {
-    return '?';
-  }
-};
-const cpu = (readText('/proc/cpuinfo') || '').match(/^model name\s*:\s*(.*)$/m)?.[1] ?? os.cpus()[0]?.model ?? '?';
 const cache = readText('build/CMakeCache.txt') || '';
 const cacheVar = (k) => cache.match(new RegExp(`^${k}:[A-Z]+=(.*)$`, 'm'))?.[1] ?? '?';
 const compiler = cacheVar('CMAKE_CXX_COMPILER');
