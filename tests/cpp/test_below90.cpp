@@ -58,45 +58,43 @@ bool cornerBelow(const double* a, const double* b, const double* c, double degre
   return ((dot * dot).shl(53 - e) - m * lengths).sign() > 0;
 }
 
+// Calls f(a, b, c) for every corner a of every triangle of `m` (b, c: the triangle's others).
+template <class F>
+void forEachCorner(const Mesh& m, F f) {
+  for (size_t t = 0; t < m.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k)
+      f(&m.points[2 * size_t(m.triangles[3 * t + k])],
+        &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])],
+        &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])]);
+}
+
 // The corners of `m` that are not below `degrees` (0: every angle below it).
 size_t cornersNotBelow(const Mesh& m, double degrees) {
   const double q = cos2Above(degrees);
   size_t n = 0;
-  for (size_t t = 0; t < m.triangleCount(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const double* a = &m.points[2 * size_t(m.triangles[3 * t + k])];
-      const double* b = &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])];
-      const double* c = &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])];
-      n += !cornerBelow(a, b, c, degrees, q);
-    }
+  forEachCorner(m, [&](const double* a, const double* b, const double* c) {
+    n += !cornerBelow(a, b, c, degrees, q);
+  });
   return n;
 }
 
 // Obtuse corners (exact dot-product sign below 0).
 size_t obtuseCorners(const Mesh& m) {
   size_t n = 0;
-  for (size_t t = 0; t < m.triangleCount(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const double* a = &m.points[2 * size_t(m.triangles[3 * t + k])];
-      const double* b = &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])];
-      const double* c = &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])];
-      n += dot2d(a, b, c) < 0;
-    }
+  forEachCorner(m, [&](const double* a, const double* b, const double* c) {
+    n += dot2d(a, b, c) < 0;
+  });
   return n;
 }
 
 // The smallest angle of `m` (floating point, degrees).
 double smallestAngle(const Mesh& m) {
   double smallest = 180;
-  for (size_t t = 0; t < m.triangleCount(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const double* a = &m.points[2 * size_t(m.triangles[3 * t + k])];
-      const double* b = &m.points[2 * size_t(m.triangles[3 * t + (k + 1) % 3])];
-      const double* c = &m.points[2 * size_t(m.triangles[3 * t + (k + 2) % 3])];
-      const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
-      smallest = std::min(smallest,
-                          std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI);
-    }
+  forEachCorner(m, [&](const double* a, const double* b, const double* c) {
+    const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+    smallest = std::min(smallest,
+                        std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI);
+  });
   return smallest;
 }
 
