@@ -22,6 +22,20 @@ double largestCosine(const double* a, const double* b, const double* c) {
   return (la + lb - lc) / (2 * std::sqrt(la * lb));
 }
 
+// Triangle a, b, c's margin to the target: the cosine of its largest angle less the bound's
+// (and with a minimum angle, the cosine of that less that of its smallest angle, if smaller).
+// Negative: it misses the target by that much.
+double triangleMargin(const Target& target, const double* a, const double* b, const double* c) {
+  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
+  // Cosines at a, b, c from the squared sides (law of cosines).
+  const double ca = (lb + lc - la) / (2 * std::sqrt(lb * lc)),
+               cb = (la + lc - lb) / (2 * std::sqrt(la * lc)),
+               cc = (la + lb - lc) / (2 * std::sqrt(la * lb));
+  double m = std::min({ca, cb, cc}) - target.cosMax;
+  if (target.minAngle > 0) m = std::min(m, target.cosMin - std::max({ca, cb, cc}));
+  return m;
+}
+
 }  // namespace
 
 // The star of v in star_ (no ghost in it), and for a point on a segment its neighbours there
@@ -49,9 +63,8 @@ bool AngleDescent::gather(uint32_t v) {
   return !onSegment || fixedSpokes == 2;
 }
 
-// The margins of the star's domain triangles, smallest first, into `out`: for each the cosine
-// of its largest angle less the bound's (and with a minimum angle, the cosine of that less
-// its smallest angle's, if smaller). Empty (and false) if a triangle of the star is not
+// The margins (triangleMargin) of the star's domain triangles, smallest first, into `out`.
+// Empty (and false) if a triangle of the star is not
 // counter-clockwise (in floating point: a move is confirmed with exact predicates). Stars are
 // compared by these lists (leximin): the worst triangle first, then the next, so that a move
 // that helps the worst does not spoil the others.
@@ -67,16 +80,7 @@ bool AngleDescent::margins(std::vector<double>& out) const {
       out.clear();
       return false;
     }
-    if (!starInside_[i]) continue;
-    const double bcx = c[0] - b[0], bcy = c[1] - b[1];
-    const double la = bcx * bcx + bcy * bcy, lb = acx * acx + acy * acy, lc = abx * abx + aby * aby;
-    // Cosines at a, b, c from the squared sides (law of cosines).
-    const double ca = (lb + lc - la) / (2 * std::sqrt(lb * lc)),
-                 cb = (la + lc - lb) / (2 * std::sqrt(la * lc)),
-                 cc = (la + lb - lc) / (2 * std::sqrt(la * lb));
-    double m = std::min({ca, cb, cc}) - target.cosMax;
-    if (target.minAngle > 0) m = std::min(m, target.cosMin - std::max({ca, cb, cc}));
-    out.push_back(m);
+    if (starInside_[i]) out.push_back(triangleMargin(target, a, b, c));
   }
   std::sort(out.begin(), out.end());
   return true;
@@ -250,7 +254,7 @@ size_t AngleDescent::smooth() {
 }
 
 // How far the domain's triangles are from the target in all: the sum of their negative
-// margins (as margins() reckons them), 0 when every one meets it.
+// margins (triangleMargin), 0 when every one meets it.
 double AngleDescent::violation() const {
   const Target& target = job_.target;
   const Triangulation& T = s_.T;
@@ -258,13 +262,7 @@ double AngleDescent::violation() const {
   for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
     if (!T.inDomain(t)) continue;
     const uint32_t* v = &T.tri[3 * t];
-    const double *a = T.point(v[0]), *b = T.point(v[1]), *c = T.point(v[2]);
-    const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-    const double ca = (lb + lc - la) / (2 * std::sqrt(lb * lc)),
-                 cb = (la + lc - lb) / (2 * std::sqrt(la * lc)),
-                 cc = (la + lb - lc) / (2 * std::sqrt(la * lb));
-    double m = std::min({ca, cb, cc}) - target.cosMax;
-    if (target.minAngle > 0) m = std::min(m, target.cosMin - std::max({ca, cb, cc}));
+    const double m = triangleMargin(target, T.point(v[0]), T.point(v[1]), T.point(v[2]));
     if (m < 0 || target.misses(s_, t)) sum += std::max(-m, 1e-9);
   }
   return sum;

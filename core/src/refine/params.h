@@ -90,8 +90,8 @@ constexpr double kDescentStep = 0.25, kDescentFinestStep = 1e-3;
 constexpr int kDescentSearchSteps = 32;
 // A point on a segment keeps this fraction of its stretch from either neighbour.
 constexpr double kDescentSegmentRoom = 0.05;
-// Smoothing sweeps per round at most; rounds in a row that do not lower the count of missed
-// triangles before the descent gives up.
+// Smoothing sweeps per round at most; rounds in a row that do not lower the violation by
+// kDescentGain before the descent gives up.
 constexpr int kDescentSweeps = 4, kDescentStaleRounds = 5;
 // A round must lower the violation by this fraction, or the next looks two moves ahead.
 constexpr double kDescentGain = 0.02;
