@@ -14,26 +14,32 @@ constexpr double kDirections[8][2] = {{1, 0},           {0, 1},         {-1, 0},
                                       {0, -1},          {kDiag, kDiag}, {-kDiag, kDiag},
                                       {-kDiag, -kDiag}, {kDiag, -kDiag}};
 
+// The cosine of the angle between sides of squared lengths p and q, opposite the side of
+// squared length o (law of cosines).
+double cosineOpposite(double o, double p, double q) { return (p + q - o) / (2 * std::sqrt(p * q)); }
+
 // The cosine of the largest angle of triangle a, b, c (opposite its longest side).
 double largestCosine(const double* a, const double* b, const double* c) {
   const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-  if (la >= lb && la >= lc) return (lb + lc - la) / (2 * std::sqrt(lb * lc));
-  if (lb >= lc) return (la + lc - lb) / (2 * std::sqrt(la * lc));
-  return (la + lb - lc) / (2 * std::sqrt(la * lb));
+  if (la >= lb && la >= lc) return cosineOpposite(la, lb, lc);
+  if (lb >= lc) return cosineOpposite(lb, la, lc);
+  return cosineOpposite(lc, la, lb);
+}
+
+// The cosine of the smallest angle of triangle a, b, c (opposite its shortest side).
+double smallestCosine(const double* a, const double* b, const double* c) {
+  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
+  if (la <= lb && la <= lc) return cosineOpposite(la, lb, lc);
+  if (lb <= lc) return cosineOpposite(lb, la, lc);
+  return cosineOpposite(lc, la, lb);
 }
 
 // Triangle a, b, c's margin to the target: the cosine of its largest angle less the bound's
 // (and with a minimum angle, the cosine of that less that of its smallest angle, if smaller).
 // Negative: it misses the target by that much.
 double triangleMargin(const Target& target, const double* a, const double* b, const double* c) {
-  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-  // Cosines at a, b, c from the squared sides (law of cosines).
-  const double ca = (lb + lc - la) / (2 * std::sqrt(lb * lc)),
-               cb = (la + lc - lb) / (2 * std::sqrt(la * lc)),
-               cc = (la + lb - lc) / (2 * std::sqrt(la * lb));
-  double m = std::min({ca, cb, cc}) - target.cosMax;
-  if (target.minAngle > 0) m = std::min(m, target.cosMin - std::max({ca, cb, cc}));
-  return m;
+  const double m = largestCosine(a, b, c) - target.cosMax;
+  return target.minAngle > 0 ? std::min(m, target.cosMin - smallestCosine(a, b, c)) : m;
 }
 
 }  // namespace
@@ -86,22 +92,42 @@ bool AngleDescent::margins(std::vector<double>& out) const {
   return true;
 }
 
-bool AngleDescent::marginsAt(uint32_t v, const double* p, std::vector<double>& out) {
+void AngleDescent::putAt(uint32_t v, const double* p) {
   double* at = &s_.T.pts[2 * size_t(v)];
   at[0] = p[0], at[1] = p[1];
-  return margins(out);
 }
 
 // Whether margins a are better than b (leximin, ignoring differences under kEven).
 bool AngleDescent::better(const std::vector<double>& a, bool aValid, const std::vector<double>& b,
                           bool bValid) {
-  constexpr double kEven = 1e-12;
   if (!aValid || !bValid) return aValid && !bValid;
   for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
     if (a[i] > b[i] + kEven) return true;
     if (a[i] < b[i] - kEven) return false;
   }
   return false;
+}
+
+// Puts v at p (for now) and whether its star is better there than best_ (margins() into try_):
+// the same as better() on the two lists, but a star with a triangle turned over or worse than
+// the best's worst is turned down at that triangle (most tries of a search end there).
+bool AngleDescent::improvesAt(uint32_t v, const double* p, bool bestValid) {
+  const Target& target = job_.target;
+  Triangulation& T = s_.T;
+  putAt(v, p);
+  const double worst = bestValid && !best_.empty() ? best_.front() - kEven : -INFINITY;
+  try_.clear();
+  for (size_t i = 0; i < star_.size(); ++i) {
+    const uint32_t* c = &T.tri[3 * star_[i]];
+    const double *a = T.point(c[0]), *b = T.point(c[1]), *d = T.point(c[2]);
+    if ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]) <= 0) return false;
+    if (!starInside_[i]) continue;
+    const double m = triangleMargin(target, a, b, d);
+    if (m < worst) return false;
+    try_.push_back(m);
+  }
+  std::sort(try_.begin(), try_.end());
+  return better(try_, true, best_, bestValid);
 }
 
 // Puts v at p if its star stays a valid triangulation there (exact) with no edge shorter than
@@ -175,9 +201,7 @@ bool AngleDescent::optimiseFree(uint32_t v) {
   }
   odt[0] /= area, odt[1] /= area;
   auto tryAt = [&](const double* q) {
-    if (!std::isfinite(q[0]) || !std::isfinite(q[1])) return false;
-    const bool valid = marginsAt(v, q, try_);
-    if (!better(try_, valid, best_, bestValid)) return false;
+    if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !improvesAt(v, q, bestValid)) return false;
     best_.swap(try_);
     bestValid = true;
     best[0] = q[0], best[1] = q[1];
@@ -197,7 +221,7 @@ bool AngleDescent::optimiseFree(uint32_t v) {
     }
     if (!moved) h *= 0.5;
   }
-  marginsAt(v, start, try_);
+  putAt(v, start);
   return (best[0] != start[0] || best[1] != start[1]) && settleAt(v, best);
 }
 
@@ -222,15 +246,14 @@ bool AngleDescent::optimiseOnSegment(uint32_t v) {
       if (!(t > lo + room && t < hi - room)) continue;
       double q[2];
       line.at(t, q);
-      const bool valid = marginsAt(v, q, try_);
-      if (!better(try_, valid, best_, bestValid)) continue;
+      if (!improvesAt(v, q, bestValid)) continue;
       best_.swap(try_);
       bestValid = true, best = t, moved = true;
     }
     movedAtAll |= moved;
     if (!moved) h *= 0.5;
   }
-  marginsAt(v, start, try_);
+  putAt(v, start);
   if (!movedAtAll) return false;
   double q[2];
   line.at(best, q);

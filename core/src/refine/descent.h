@@ -40,7 +40,10 @@ class AngleDescent {
  private:
   bool gather(uint32_t v);
   bool margins(std::vector<double>& out) const;
-  bool marginsAt(uint32_t v, const double* p, std::vector<double>& out);
+  void putAt(uint32_t v, const double* p);
+  bool improvesAt(uint32_t v, const double* p, bool bestValid);
+  // Margins closer than this are even (better()).
+  static constexpr double kEven = 1e-12;
   static bool better(const std::vector<double>& a, bool aValid, const std::vector<double>& b,
                      bool bValid);
   bool settleAt(uint32_t v, const double* p);
