@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "joint_smooth.h"
 #include "params.h"
 
 namespace acutemesh::detail {
@@ -507,6 +508,23 @@ size_t AngleDescent::repair(int depth) {
   return kept;
 }
 
+// Where the moves stop paying: every point moved at once (joint_smooth.h), then the sweeps;
+// kept if the violation drops by kDescentGain below `least` (which it lowers), else undone.
+bool AngleDescent::unstick(double& least) {
+  if (kJointSteps == 0) return false;
+  RefineState before = s_;
+  smoothJointly(s_, job_, job_.options.maxAngle - kJointRoom, kJointSteps);
+  for (int sweep = 0; sweep < kDescentSweeps && !job_.budget.stop(); ++sweep)
+    if (smooth() + flipPass() == 0) break;
+  const double now = violation();
+  if (now < least * (1 - kDescentGain)) {
+    least = now;
+    return true;
+  }
+  s_ = std::move(before);
+  return false;
+}
+
 bool AngleDescent::run() {
   double least = INFINITY;
   int depth = 1;
@@ -520,13 +538,20 @@ bool AngleDescent::run() {
     if (now < least * (1 - kDescentGain)) {
       least = now, stale = 0;
     } else if (++stale >= kDescentStaleRounds) {
-      return false;
+      if (!unstick(least)) return false;
+      if (least == 0) return true;
+      stale = 0;
     } else {
       depth = std::max(depth, 2);
     }
     while (repair(depth) == 0) {
-      if (depth == kDescentDepth) return false;
-      ++depth;
+      if (depth < kDescentDepth) {
+        ++depth;
+      } else {
+        if (!unstick(least)) return false;
+        if (least == 0) return true;
+        break;
+      }
     }
   }
   return false;

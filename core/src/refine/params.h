@@ -104,6 +104,15 @@ constexpr int kDescentLocalSweeps = 2;
 constexpr double kDescentMoves = 2000, kDescentMovesPerVertex = 8;
 // The deepest look-ahead: moves in a row, each at the worst triangle near the last.
 constexpr int kDescentDepth = 3;
+// Joint smoothing (joint_smooth.h), where the descent's moves stop paying: it aims this many
+// degrees below the bound and takes at most kJointSteps steps, the first kJointFirstStep times
+// the gradient (scaled by each point's shortest edge squared), halved up to kJointTries times
+// until the penalty drops; no point moves further than kJointFarthest of its shortest edge in
+// one step.
+constexpr double kJointRoom = 0.5;
+constexpr int kJointSteps = 30;
+constexpr double kJointFirstStep = 0.5, kJointFarthest = 0.3;
+constexpr int kJointTries = 12;
 // Rounds per bound at most.
 constexpr int kDescentRounds = 24;
 
