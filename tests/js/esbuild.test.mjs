@@ -100,14 +100,15 @@ test('zero configuration: the errors name the missing files and the fix', { time
 });
 
 test('the recipe of docs/js.md: the worker an entry of its own, the .wasm beside', { timeout: 60000 }, async () => {
-  // As docs/js.md writes it (the build script), in public/ under app/recipe.
-  await bundle({
-    entryPoints: ['src/app.js', 'node_modules/acutemesh/dist/mesh-worker.js'],
-    entryNames: '[name]', outdir: 'recipe/assets',
-  });
-  copyFileSync(join(pkg, 'acutemesh.wasm'), join(app, 'recipe', 'assets', 'acutemesh.wasm'));
-  page('recipe', 'assets/app.js');
-  assert.deepEqual(await resultsOf('recipe'), { main: true, worker: true });
+  // docs/js.md's build script, run as it is: public/assets/{app.js,mesh-worker.js,acutemesh.wasm}.
+  const docs = readFileSync(join(root, 'docs', 'js.md'), 'utf8');
+  const recipe = /```js\n(\/\/ build\.mjs [^]*?)```/.exec(docs);
+  assert.ok(recipe, 'docs/js.md has no build.mjs block');
+  writeFileSync(join(app, 'build.mjs'), recipe[1]);
+  symlinkSync(join(root, 'node_modules', 'esbuild'), join(app, 'node_modules', 'esbuild'), 'dir');
+  execFileSync(process.execPath, ['build.mjs'], { cwd: app, stdio: 'pipe' });
+  page('public', 'assets/app.js');
+  assert.deepEqual(await resultsOf('public'), { main: true, worker: true });
 });
 
 test('files elsewhere: init({ wasmUrl }) and createMeshWorker({ workerUrl, init: { wasmUrl } })', { timeout: 60000 }, async () => {
