@@ -199,7 +199,7 @@ function exactFeet(path) {
     assert.equal(solution.steiner_points_x[p.vertex - n0], expect(p.x));
     assert.equal(solution.steiner_points_y[p.vertex - n0], expect(p.y));
   }
-  assert.deepEqual(JSON.parse(am.toJSON(m)).exactPoints, m.exactPoints.map((p) => [p.vertex, p.x, p.y]));
+  assert.deepEqual(JSON.parse(am.toJson(m)).exactPoints, m.exactPoints.map((p) => [p.vertex, p.x, p.y]));
 }
 
 test('exact feet on the synthetic tilted point set', () => {
@@ -350,9 +350,9 @@ test('writers: each format reads back or has the right counts', () => {
   const poly = am.parsePoly(am.toPoly(m));
   assert.deepEqual(poly.points, m.points);
   assert.deepEqual(poly.segments, m.segments);
-  const json = am.parseJson(am.toJSON(m));
+  const json = am.parseJson(am.toJson(m));
   assert.deepEqual(json.points, m.points);
-  const parsedJson = JSON.parse(am.toJSON(m));
+  const parsedJson = JSON.parse(am.toJson(m));
   assert.deepEqual(parsedJson.triangles.flat(), [...m.triangles]);
 
   const ele = am.toEle(m).split('\n').filter((l) => l && !l.startsWith('#'));

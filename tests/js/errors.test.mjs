@@ -69,9 +69,9 @@ test('wrong argument types: TypeError naming the argument', () => {
   typeError(() => am.mesh(square, { convexHull: 1 }), /options\.convexHull must be a boolean/);
   typeError(() => am.mesh(square, { exactSegments: 'yes' }), /options\.exactSegments must be a boolean/);
   typeError(() => am.mesh(square, { exactFeet: 1 }), /options\.exactFeet must be a boolean/);
-  typeError(() => am.toJSON({ points: [0, 0, 1, 0, 0, 1], triangles: [0, 1, 2], exactPoints: {} }),
+  typeError(() => am.toJson({ points: [0, 0, 1, 0, 0, 1], triangles: [0, 1, 2], exactPoints: {} }),
             /mesh\.exactPoints must be an array/);
-  rejects(() => am.toJSON({ points: [0, 0, 1, 0, 0, 1], triangles: [0, 1, 2], exactPoints: [{ vertex: 1, x: '1/0', y: '0' }] }),
+  rejects(() => am.toJson({ points: [0, 0, 1, 0, 0, 1], triangles: [0, 1, 2], exactPoints: [{ vertex: 1, x: '1/0', y: '0' }] }),
           'BAD_INPUT', /mesh\.exactPoints\[0\]\.x must be a rational "p\/q" or "p"/);
   typeError(() => am.mesh(square, { onProgress: 1 }), /options\.onProgress must be a function/);
   typeError(() => am.mesh(square, { signal: {} }), /options\.signal must be an AbortSignal/);

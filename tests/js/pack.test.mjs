@@ -1,13 +1,14 @@
-// The package as users get it: `npm pack` (its prepack step builds dist/), the tarball holding
-// exactly dist/ as wasm/assemble.mjs makes it, package.json, README.md and LICENSE; installed
-// into an empty project, and there: repository inputs (and the reference .poly inputs, when
-// that data is there) meshed to certified acute meshes through the API, acutemesh/single and
-// acutemesh/worker imported, and the types resolved by tsc from node_modules
-// (moduleResolution nodenext, bundler and node10).
+// The package as users get it: `npm pack` (its prepack step builds dist/, or refuses without
+// the toolchain), the tarball holding exactly dist/ as wasm/assemble.mjs makes it,
+// package.json, README.md and LICENSE; installed into an empty project, and there: repository
+// inputs (and the reference .poly inputs, when that data is there) meshed to certified acute
+// meshes through the API, acutemesh/single and acutemesh/worker imported, require('acutemesh')
+// from CommonJS, and the types resolved by tsc from node_modules (moduleResolution nodenext,
+// bundler and node10; nodenext from CommonJS).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, writeFileSync, rmSync, readdirSync } from 'node:fs';
+import { mkdtempSync, writeFileSync, rmSync, readdirSync, mkdirSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 
@@ -79,6 +80,13 @@ console.log(JSON.stringify({ out, single: s.stats.certified, worker: w.stats.cer
     assert.equal(result.single, true);
     assert.equal(result.worker, true);
   };
+  // CommonJS: init is require('acutemesh') itself.
+  writeFileSync(join(app, 'check.cjs'), `
+const init = require('acutemesh');
+init().then((am) => console.log(am.mesh({ points: [0, 0, 1, 0, 0, 1] }, { mode: 'acute' }).stats.certified));
+`);
+  assert.equal(sh(process.execPath, ['check.cjs'], app).trim(), 'true');
+
   await t.test('repository inputs meshed acute', () => meshAcute([
     join(testData, 'A.poly'), join(testData, 'plate.poly'), join(testData, 'naca0012.poly'),
     join(syntheticCgshop, 'simple-polygon-exterior_50_synthetic.instance.json')]));
@@ -100,6 +108,13 @@ const m: MeshResult = am.mesh(am.fromRings([[[0, 0], [1, 0], [0, 1]]]), { mode: 
 const e = new AcuteMeshError('BAD_INPUT', 'x');
 void [m.stats.certified, e.code, initSingle, createMeshWorker];
 `);
+  writeFileSync(join(app, 'use.cts'), `
+import init = require('acutemesh');
+export async function use(): Promise<boolean> {
+  const am: init.AcuteMesh = await init();
+  return am.mesh({ points: [0, 0, 1, 0, 0, 1] }, { mode: 'acute' }).stats.certified;
+}
+`);
   const tsc = join(root, 'node_modules', 'typescript', 'bin', 'tsc');
   for (const resolution of [['nodenext', 'nodenext'], ['esnext', 'bundler'], ['esnext', 'node10']]) {
     let output = '';
@@ -111,4 +126,35 @@ void [m.stats.certified, e.code, initSingle, createMeshWorker];
     }
     assert.equal(output, '', `moduleResolution ${resolution[1]}`);
   }
+  let output = '';
+  try {
+    sh(process.execPath, [tsc, '--noEmit', '--strict', '--target', 'es2022', '--lib', 'es2022',
+      '--module', 'nodenext', '--moduleResolution', 'nodenext', 'use.cts'], app);
+  } catch (e) {
+    output = e.stdout + e.stderr;
+  }
+  assert.equal(output, '', 'CommonJS, moduleResolution nodenext');
+});
+
+test('npm pack refuses, packing nothing, without the WebAssembly toolchain', (t) => {
+  const work = mkdtempSync(join(tmpdir(), 'acutemesh-pack-refused-'));
+  t.after(() => rmSync(work, { recursive: true, force: true }));
+  // A PATH with npm and what prepack.sh needs to run, but no cmake or Emscripten.
+  const bin = join(work, 'bin');
+  mkdirSync(bin);
+  for (const tool of [npm, 'node', 'bash', 'sh', 'env', 'dirname'])
+    symlinkSync(sh('bash', ['-c', `command -v ${tool}`]).trim(), join(bin, tool));
+  const out = join(work, 'out');
+  let error;
+  try {
+    execFileSync(join(bin, npm), ['pack', '--pack-destination', out], {
+      cwd: root, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, PATH: bin },
+    });
+  } catch (e) {
+    error = e;
+  }
+  assert.ok(error, 'npm pack succeeded without cmake and Emscripten');
+  assert.match(error.stderr, /prepack: cannot build the package's dist\/: missing cmake emcmake emcc/);
+  assert.match(error.stderr, /Nothing was packed\./);
+  assert.deepEqual(readdirSync(work), ['bin']);
 });

@@ -1,14 +1,16 @@
 // acutemesh/worker in Node (worker_threads): results, progress on the calling thread, errors
 // rebuilt as AcuteMeshError, an AbortSignal that terminates a busy worker, and the next call
-// on a fresh worker.
+// on a fresh worker; workerUrl and init.wasmUrl, and the errors when the files are not there.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
+import { readFileSync, mkdtempSync, copyFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, relative as relativePath } from 'node:path';
+import { pathToFileURL } from 'node:url';
 
 import init from 'acutemesh';
 import { createMeshWorker, meshInWorker, AcuteMeshError } from 'acutemesh/worker';
-import { testData } from './helpers.mjs';
+import { root, testData } from './helpers.mjs';
 
 const am = await init();
 const pslg = am.parsePoly(readFileSync(join(testData, 'A.poly'), 'utf8'));
@@ -114,4 +116,41 @@ test('meshInWorker uses one shared worker; terminate rejects pending calls', { t
   worker.terminate();
   await assert.rejects(pending, /terminated/);
   await assert.rejects(worker.mesh(square), /terminated/);
+});
+
+test('workerUrl and init.wasmUrl say where the worker and the .wasm are; when missing, the error names the file and the fix', { timeout: 120000 }, async () => {
+  const dir = mkdtempSync(join(tmpdir(), 'acutemesh-worker-url-'));
+  try {
+    // The package's files where a bundler's output would put them, under other names.
+    copyFileSync(join(root, 'dist', 'acutemesh.wasm'), join(dir, 'module.wasm'));
+    const relative = (p) => './' + relativePath(process.cwd(), p);
+    const placed = createMeshWorker({
+      workerUrl: relative(join(root, 'dist', 'mesh-worker-node.js')),  // a path, as in Node
+      init: { wasmUrl: relative(join(dir, 'module.wasm')) },
+    });
+    try {
+      assert.ok((await placed.mesh(square, { mode: 'acute' })).stats.certified);
+    } finally {
+      placed.terminate();
+    }
+
+    const missing = join(dir, 'no-such-worker.js');
+    const noWorker = createMeshWorker({ workerUrl: pathToFileURL(missing) });
+    await assert.rejects(noWorker.mesh(square), (e) => {
+      assert.ok(e.message.startsWith(`acutemesh: could not start the mesh worker from ${pathToFileURL(missing).href} (`), e.message);
+      assert.match(e.message, /createMeshWorker\(\{ workerUrl \}\)$/);
+      return true;
+    });
+    noWorker.terminate();
+
+    const noWasm = createMeshWorker({ init: { wasmUrl: join(dir, 'acutemesh.wasm') } });
+    await assert.rejects(noWasm.mesh(square), (e) => {
+      assert.ok(e.message.startsWith(`acutemesh: cannot read the WebAssembly module ${pathToFileURL(join(dir, 'acutemesh.wasm')).href} (ENOENT): `), e.message);
+      assert.match(e.message, /init\(\{ wasmUrl \}\)$/);
+      return true;
+    });
+    noWasm.terminate();
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
 });

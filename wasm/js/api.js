@@ -4,6 +4,7 @@
 // WebAssembly.Module, this file does the rest. The names of modes, fill rules, formats and
 // statuses, and the options' defaults, come from the core (core_vocabulary, exported as
 // `vocabulary`): none is written here.
+import { checkKeys, MESH_OPTION_KEYS, INIT_OPTION_KEYS } from './keys.js';
 
 /** Errors from acutemesh itself; `code` says what kind (see index.d.ts). */
 export class AcuteMeshError extends Error {
@@ -44,8 +45,11 @@ function toCoordinates(value, what) {
     const out = new Float64Array(2 * value.length);
     for (let i = 0; i < value.length; ++i) {
       const p = value[i];
-      if (!Array.isArray(p) || p.length < 2 || typeof p[0] !== 'number' || typeof p[1] !== 'number')
+      if (!Array.isArray(p) || typeof p[0] !== 'number' || typeof p[1] !== 'number')
         throw new TypeError(`${what}[${i}] must be an [x, y] pair of numbers`);
+      // [x, y, z] would otherwise be meshed as its projection without a word.
+      if (p.length !== 2)
+        throw new TypeError(`${what}[${i}] has ${p.length} numbers; a point is an [x, y] pair (the mesh is planar)`);
       out[2 * i] = p[0];
       out[2 * i + 1] = p[1];
     }
@@ -200,9 +204,10 @@ function maxAngleOption(options, fallback) {
 // The options that describe the job, as names (what a mesh result carries, and what
 // validate() reads back); functions and signals are handled by mesh() itself. `core` holds the
 // names' checks and the defaults (makeApi); `input` is toPslg's result.
-function toOptions(options, input, core) {
+function toOptions(options, input, core, where) {
   if (options === undefined) options = {};
   checkObject(options, 'options');
+  checkKeys(options, MESH_OPTION_KEYS, where);
   const { names, defaults } = core;
   const mode = names.check(options.mode, 'mode', 'mode', defaults.mode);
   const fill = names.check(options.fill, 'fill', 'fill rule', input.fill === undefined ? defaults.fill : input.fill);
@@ -271,6 +276,7 @@ function ringsToPslg(rings, options, core) {
   if (!Array.isArray(rings)) throw new TypeError(`rings must be an array of rings, not ${describe(rings)}`);
   if (options === undefined) options = {};
   checkObject(options, 'options');
+  checkKeys(options, ['fill'], 'fromRings()');
   const fill = core.names.check(options.fill, 'fill', 'fill rule', core.defaults.ringsFill);
   const flat = rings.map((ring, r) => toCoordinates(ring, `rings[${r}]`));
   let total = 0;
@@ -425,6 +431,7 @@ function makeParsers(call) {
     parsePoly(text, options = {}) {
       checkText(text, 'text');
       checkObject(options, 'options');
+      checkKeys(options, ['name', 'nodeText'], 'parsePoly()');
       const name = nameOr(options, 'input.poly');
       const nodeText = options.nodeText === undefined ? '' : options.nodeText;
       checkText(nodeText, 'options.nodeText');
@@ -435,6 +442,7 @@ function makeParsers(call) {
     parseNode(text, options = {}) {
       checkText(text, 'text');
       checkObject(options, 'options');
+      checkKeys(options, ['name'], 'parseNode()');
       return parsed(call((I) => I.core_parseNode(utf8.encode(text), nameOr(options, 'input.node'))));
     },
 
@@ -443,6 +451,7 @@ function makeParsers(call) {
     parseJson(text, options = {}) {
       checkText(text, 'text');
       checkObject(options, 'options');
+      checkKeys(options, ['name'], 'parseJson()');
       return parsed(call((I) => I.core_parseJson(utf8.encode(text), nameOr(options, 'input.json'))));
     },
   };
@@ -475,7 +484,7 @@ function makeWriters(call, names) {
     toNode: formatter('node'),
     toEle: formatter('ele'),
     toPoly: formatter('poly'),
-    toJSON: formatter('json'),
+    toJson: formatter('json'),
     toOFF: formatter('off'),
     toOBJ: formatter('obj'),
     toSVG: formatter('svg'),
@@ -496,7 +505,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
       call((I) => I.core_inputPolicy(format, exactFeetChosen, options)),
   };
 
-  return {
+  const api = {
     version: M.core_version(),
 
     // Modes, fill rules, statuses, vertex kinds, input and output formats ({name, value,
@@ -509,7 +518,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
 
     mesh(pslg, options = {}) {
       const input = toPslg(pslg, core.names);
-      const opts = withInputPolicy(toOptions(options, input, core), input, options, core);
+      const opts = withInputPolicy(toOptions(options, input, core, 'mesh()'), input, options, core);
       const { onProgress, signal } = options;
       if (onProgress !== undefined && typeof onProgress !== 'function')
         throw new TypeError(`options.onProgress must be a function, not ${describe(onProgress)}`);
@@ -537,7 +546,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
       const input = toPslg(pslg, core.names);
       const mesh = toMesh(m);
       if (options === undefined) options = m.options === undefined ? {} : m.options;
-      const opts = toOptions(options, input, core);
+      const opts = toOptions(options, input, core, 'validate()');
       return call((I) => I.core_validate(input.points, input.segments, input.holes, mesh, opts));
     },
 
@@ -548,6 +557,14 @@ function makeApi(factory, compiled, memoryLimit, M) {
       return call((I) => I.core_memory());
     },
   };
+  // The JSON writer was called toJSON before toJson, and JSON.stringify calls an object's
+  // toJSON with a property key (a string): the key gets the API's data, a mesh the writer.
+  // Not enumerable: the writers are the enumerable to* functions.
+  Object.defineProperty(api, 'toJSON', {
+    value: (meshOrKey) =>
+      (typeof meshOrKey === 'string' ? { version: api.version, vocabulary } : api.toJson(meshOrKey)),
+  });
+  return api;
 }
 
 // Entry points call this with the glue's factory and a function that resolves the
@@ -555,6 +572,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
 export function makeEntry(factory, compile) {
   async function createInstance(options = {}) {
     checkObject(options, 'options');
+    checkKeys(options, INIT_OPTION_KEYS, 'init()');
     const { maxMemory } = options;
     if (maxMemory !== undefined && (typeof maxMemory !== 'number' || !(maxMemory > 0)))
       throw new TypeError('options.maxMemory must be a positive number of bytes');

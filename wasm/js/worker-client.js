@@ -1,7 +1,9 @@
 // The calling side of acutemesh/worker, shared by worker.js (browsers: Worker) and
-// worker-node.js (Node: worker_threads); `spawn()` returns a Worker-like object adapted to
+// worker-node.js (Node: worker_threads); `spawn(workerUrl)` starts the package's worker, or the
+// one at workerUrl (an absolute URL) when given, and returns a Worker-like object adapted to
 // { post(message), onMessage(handler), onError(handler), terminate(), busy(flag) } (busy: Node
-// keeps the process alive only while a job runs).
+// keeps the process alive only while a job runs). `resolveUrl(url)` makes the URLs a user
+// gives absolute, relative to the page (browsers) or the working directory (Node).
 //
 // Cancellation: a worker busy in mesh() runs synchronous wasm and reads no messages, and
 // sharing a flag with it would need SharedArrayBuffer (cross-origin isolation in browsers).
@@ -9,6 +11,7 @@
 // by default), and the next call starts a fresh worker. Works everywhere, costs one worker
 // start (tens of milliseconds) after an abort.
 import { AcuteMeshError } from './api.js';
+import { checkKeys, MESH_OPTION_KEYS, INIT_OPTION_KEYS } from './keys.js';
 
 function abortReason(signal) {
   return signal.reason !== undefined ? signal.reason : new DOMException('The operation was aborted', 'AbortError');
@@ -26,8 +29,8 @@ function rebuildError(e) {
 // One worker and its queue of jobs: mesh() calls run one after another; the worker starts on
 // the first and again after an abort or a crash.
 class MeshWorker {
-  constructor(spawn, initOptions) {
-    this.spawn = spawn;
+  constructor(spawn, initOptions, workerUrl) {
+    this.spawn = () => spawn(workerUrl);
     this.initOptions = initOptions;
     this.worker = null;
     this.nextId = 1;
@@ -102,6 +105,11 @@ class MeshWorker {
     if (this.closed) return Promise.reject(new Error('acutemesh: this mesh worker was terminated'));
     if (typeof options !== 'object' || options === null)
       return Promise.reject(new TypeError('options must be an object'));
+    try {
+      checkKeys(options, MESH_OPTION_KEYS, 'mesh()');
+    } catch (e) {
+      return Promise.reject(e);
+    }
     const { signal, onProgress, ...rest } = options;
     if (onProgress !== undefined && typeof onProgress !== 'function')
       return Promise.reject(new TypeError('options.onProgress must be a function'));
@@ -148,11 +156,30 @@ class MeshWorker {
   }
 }
 
-export function makeWorkerHelper(spawn) {
+// init() inside the worker gets what can be posted to it; a relative wasmUrl is made absolute
+// here, so that it means the same as in init() on this side.
+function workerInitOptions(init, resolveUrl) {
+  if (init === undefined) return undefined;
+  if (typeof init !== 'object' || init === null) throw new TypeError('options.init must be an object');
+  if (init.locateFile !== undefined)
+    throw new TypeError('options.init.locateFile cannot be sent to a worker (it is a function): pass the URL as init.wasmUrl');
+  checkKeys(init, INIT_OPTION_KEYS.filter((k) => k !== 'locateFile'), 'createMeshWorker() init');
+  if (init.wasmUrl === undefined) return init;
+  if (typeof init.wasmUrl !== 'string' && !(init.wasmUrl instanceof URL))
+    throw new TypeError('options.init.wasmUrl must be a string or a URL');
+  return { ...init, wasmUrl: resolveUrl(init.wasmUrl) };
+}
+
+export function makeWorkerHelper(spawn, resolveUrl) {
   function createMeshWorker(workerOptions = {}) {
     if (typeof workerOptions !== 'object' || workerOptions === null)
       throw new TypeError('options must be an object');
-    const w = new MeshWorker(spawn, workerOptions.init);
+    checkKeys(workerOptions, ['workerUrl', 'init'], 'createMeshWorker()');
+    const { workerUrl } = workerOptions;
+    if (workerUrl !== undefined && typeof workerUrl !== 'string' && !(workerUrl instanceof URL))
+      throw new TypeError('options.workerUrl must be a string or a URL');
+    const w = new MeshWorker(spawn, workerInitOptions(workerOptions.init, resolveUrl),
+      workerUrl === undefined ? undefined : resolveUrl(workerUrl));
     return { mesh: (pslg, options) => w.mesh(pslg, options), terminate: () => w.terminate() };
   }
 

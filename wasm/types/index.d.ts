@@ -113,7 +113,7 @@ export interface MeshOptions {
   /**
    * Non-obtuse: Steiner points on segments may stand for exact altitude feet, rationals no
    * double holds (see MeshResult.exactPoints): far fewer points next to tilted segments. For
-   * outputs that hold rationals (toCgshop, toJSON). Default false; true for a parsed CG:SHOP
+   * outputs that hold rationals (toCgshop, toJson). Default false; true for a parsed CG:SHOP
    * instance unless given.
    */
   exactFeet?: boolean;
@@ -354,7 +354,12 @@ export interface AcuteMesh {
   toNode(mesh: MeshInput): string;
   toEle(mesh: MeshInput): string;
   toPoly(mesh: MeshInput): string;
+  /** acutemesh's JSON (exact points as rationals); write(mesh, 'json'). */
+  toJson(mesh: MeshInput): string;
+  /** @deprecated The JSON writer's earlier name: use toJson(mesh). */
   toJSON(mesh: MeshInput): string;
+  /** What JSON.stringify(api) writes: the version and the vocabulary. */
+  toJSON(key: string): { version: string; vocabulary: Vocabulary };
   toOFF(mesh: MeshInput): string;
   toOBJ(mesh: MeshInput): string;
   toSVG(mesh: MeshInput): string;
@@ -374,6 +379,11 @@ export interface CgshopInstance {
 }
 
 export interface InitOptions {
+  /**
+   * Where acutemesh.wasm is (default: beside the package's JS), relative to the page; in Node a
+   * path or a file: URL. For bundlers that do not copy it (esbuild).
+   */
+  wasmUrl?: string | { readonly href: string };
   /** Returns the URL of acutemesh.wasm (default: beside the package's JS). */
   locateFile?: (path: string, prefix: string) => string | { readonly href: string };
   /** The bytes of acutemesh.wasm. */

@@ -21,7 +21,16 @@ export interface MeshWorker {
 }
 
 export interface MeshWorkerOptions {
-  /** Passed to init() inside the worker (structured-cloneable values only: no locateFile). */
+  /**
+   * Where the worker script is (default: mesh-worker.js beside acutemesh/worker's JS, which
+   * Vite and webpack bundle; esbuild does not): relative to the page, in Node a path or a file:
+   * URL. A bundle of acutemesh/dist/mesh-worker.js (mesh-worker-node.js in Node).
+   */
+  workerUrl?: string | { readonly href: string };
+  /**
+   * Passed to init() inside the worker (structured-cloneable values only: no locateFile; a
+   * relative wasmUrl is taken relative to the page, as for init() here).
+   */
   init?: Omit<InitOptions, 'locateFile'>;
 }
 

@@ -20,7 +20,7 @@ export async function use(text: string): Promise<number> {
   const reached: number = auto.stats.angleBound + auto.stats.angleFloor + auto.stats.smallestDomainAngle;
   const asked: number | 'auto' = auto.options.maxAngle;
   const ok: boolean = am.validate(pslg, m).ok && stats.certified && m.status === 'ok';
-  const files: string[] = [am.toNode(m), am.toEle(m), am.toPoly(m), am.toOBJ(m), am.toSVG(m), am.toJSON(m), am.toOFF(m)];
+  const files: string[] = [am.toNode(m), am.toEle(m), am.toPoly(m), am.toOBJ(m), am.toSVG(m), am.toJson(m), am.toOFF(m)];
   const x: number = m.points[0] + m.triangles[0] + m.segments.length + m.vertexKind.length;
   am.mesh({ points: [[0, 0], [1, 0], [0, 1]] }, { mode: 'delaunay' });
   am.mesh(rings);
@@ -42,12 +42,15 @@ export async function use(text: string): Promise<number> {
   }
   const other = await createInstance({ maxMemory: 2 ** 28, wasmModule: am.wasmModule });
   const single = await initSingle({ wasmBinary: new Uint8Array(8) });
+  const located = await createInstance({ wasmUrl: '/assets/acutemesh.wasm' });
+  const stringified: string = JSON.stringify(am);
   const worker: MeshWorker = createMeshWorker();
+  const placed = createMeshWorker({ workerUrl: new URL('https://example.org/mesh-worker.js'), init: { wasmUrl: '/acutemesh.wasm' } });
   const controller = new AbortController();
   const w: MeshResult = await worker.mesh(pslg, { mode: 'nonobtuse', signal: controller.signal, onProgress: (p) => void p.phase });
   worker.terminate();
   const shared = await meshInWorker(rings, { mode: 'quality', minAngle: 30 });
-  void [ok, files, x, heapSize, allocated, other, single, w, shared, reached, asked];
+  void [ok, files, x, heapSize, allocated, other, single, w, shared, reached, asked, located, stringified, placed];
 
   // @ts-expect-error: not a mode
   am.mesh(pslg, { mode: 'obtuse' });
@@ -71,6 +74,10 @@ export async function use(text: string): Promise<number> {
   am.write(m, 'stl');
   // @ts-expect-error: a CG:SHOP solution needs its instance
   am.write(m, 'cgshop');
+  // @ts-expect-error: a misspelt option
+  am.mesh(pslg, { maxangle: 60 });
+  // @ts-expect-error: a function cannot be posted to the worker
+  createMeshWorker({ init: { locateFile: () => '/acutemesh.wasm' } });
   // @ts-expect-error: the vocabulary is read-only
   am.vocabulary.defaults.maxAngle = 80;
   void [bad, arr];
