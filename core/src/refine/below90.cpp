@@ -39,13 +39,18 @@ struct Candidate {
   bool met = false;    // the bound (and a minimum angle) met
   double cosLargest = -1;
   size_t steiner = 0;
-  // Better: meets the bound with fewer points, or (neither meets it) a smaller largest angle.
+  bool overBudget = false;  // more Steiner points than Options::maxSteiner
+  // Better: meets the bound with fewer points, or (neither meets it) a smaller largest angle,
+  // by kCandidateEven degrees or more, else fewer points.
   bool betterThan(const Candidate& o) const {
-    if (!acute) return false;
-    if (!o.acute) return true;
+    if (!acute || overBudget) return false;
+    if (!o.acute || o.overBudget) return true;
     if (met != o.met) return met;
     if (met) return steiner < o.steiner;
-    return cosLargest > o.cosLargest;
+    const double largest = std::acos(cosLargest) / kDegree,
+                 other = std::acos(o.cosLargest) / kDegree;
+    if (std::fabs(largest - other) >= kCandidateEven) return largest < other;
+    return steiner < o.steiner;
   }
 };
 
@@ -57,6 +62,7 @@ Candidate judge(RefineState&& s, const Pslg& input, const Options& options) {
   c.met = c.acute && !Target(options).anyMissed(s);
   c.cosLargest = largestAngleCosine(s);
   c.steiner = s.liveSteiner(input.vertexCount());
+  c.overBudget = options.maxSteiner && c.steiner > options.maxSteiner;
   c.state = std::move(s);
   return c;
 }
@@ -110,8 +116,11 @@ RefineState qualityMesh(const RefineState& from, const Pslg& input, const Option
 Candidate descend(RefineState s, const Pslg& input, const Options& options, const Budget& budget,
                   uint32_t steinerCap, double lowest, bool graded, double done, double share) {
   RunLimits limits;
-  limits.steinerLimit =
-      uint32_t(std::min<double>(s.T.vertexCount() + double(steinerCap), double(kMaxVertices)));
+  const double budgetLimit = options.maxSteiner
+                                 ? double(input.vertexCount()) + double(options.maxSteiner)
+                                 : double(kMaxVertices);
+  limits.steinerLimit = uint32_t(
+      std::min({s.T.vertexCount() + double(steinerCap), budgetLimit, double(kMaxVertices)}));
   const Strategy strategy;
   const double minEdge2 = smallestEdge2(input);
   RefineState met;

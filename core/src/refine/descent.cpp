@@ -57,14 +57,19 @@ bool AngleDescent::gather(uint32_t v) {
   starInside_.clear();
   uint32_t fixedSpokes = 0, e0 = T.vertexEdge[v], e = e0;
   do {
-    if (T.isGhost(e / 3)) return false;
-    if (T.isFixed(e)) {
+    // A point on the hull has ghost triangles, outside: its star is the rest (the hull edge
+    // that is the spoke of a ghost triangle still counts).
+    const bool ghost = T.isGhost(e / 3);
+    if (ghost && !onSegment) return false;
+    if (T.isFixed(e) && T.tri[next(e)] != kGhost) {
       if (!onSegment || fixedSpokes == 2) return false;
       seg_[fixedSpokes++] = T.tri[next(e)];
       segment_ = T.segment[e];
     }
-    star_.push_back(e / 3);
-    starInside_.push_back(T.inDomain(e / 3));
+    if (!ghost) {
+      star_.push_back(e / 3);
+      starInside_.push_back(T.inDomain(e / 3));
+    }
     e = T.opp[prev(e)];
   } while (e != e0);
   return !onSegment || fixedSpokes == 2;
@@ -149,6 +154,7 @@ bool AngleDescent::settleAt(uint32_t v, const double* p) {
     at[0] = old[0], at[1] = old[1];
     return false;
   }
+  if (recording_) changed_.push_back(v);
   return true;
 }
 
@@ -166,6 +172,7 @@ bool AngleDescent::flipIfBetter(uint32_t e) {
   if (!(after > now + 1e-12)) return false;
   if (orient2d(pz, px, pw) <= 0 || orient2d(pw, py, pz) <= 0) return false;
   T.flip(e);
+  if (recording_) changed_.insert(changed_.end(), {x, y, z, w});
   return true;
 }
 
@@ -277,18 +284,41 @@ size_t AngleDescent::smooth() {
   return moved;
 }
 
-// How far the domain's triangles are from the target in all: the sum of their negative
-// margins (triangleMargin), 0 when every one meets it.
+// How far triangle slot t of s is from the target: its negative margin (triangleMargin), at
+// least 1e-9 where the exact check says it misses; 0 when it meets it or is not in the domain.
+double AngleDescent::violationOf(const RefineState& s, uint32_t t) const {
+  const Triangulation& T = s.T;
+  if (!T.inDomain(t)) return 0;
+  const uint32_t* v = &T.tri[3 * t];
+  const double m = triangleMargin(job_.target, T.point(v[0]), T.point(v[1]), T.point(v[2]));
+  return m < 0 || job_.target.misses(s, t) ? std::max(-m, 1e-9) : 0;
+}
+
+// The total violation: violationOf summed over the domain, 0 when every triangle meets it.
 double AngleDescent::violation() const {
-  const Target& target = job_.target;
-  const Triangulation& T = s_.T;
   double sum = 0;
-  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
-    if (!T.inDomain(t)) continue;
-    const uint32_t* v = &T.tri[3 * t];
-    const double m = triangleMargin(target, T.point(v[0]), T.point(v[1]), T.point(v[2]));
-    if (m < 0 || target.misses(s_, t)) sum += std::max(-m, 1e-9);
+  for (uint32_t t = 0; t < s_.T.triangleSlots(); ++t) sum += violationOf(s_, t);
+  return sum;
+}
+
+// violationOf summed over the triangles of s with a vertex in changed_ (each once). A move
+// changes only such triangles (changed_ holds every vertex whose star it changed), so this
+// before and after the move gives the change of the total, without a pass over the mesh.
+double AngleDescent::violationNearChanges(const RefineState& s) {
+  const Triangulation& T = s.T;
+  slots_.clear();
+  for (uint32_t v : changed_) {
+    if (v >= T.vertexCount() || T.vertexEdge[v] == kNone) continue;
+    uint32_t e0 = T.vertexEdge[v], e = e0;
+    do {
+      slots_.push_back(e / 3);
+      e = T.opp[prev(e)];
+    } while (e != e0);
   }
+  std::sort(slots_.begin(), slots_.end());
+  slots_.erase(std::unique(slots_.begin(), slots_.end()), slots_.end());
+  double sum = 0;
+  for (uint32_t t : slots_) sum += violationOf(s, t);
   return sum;
 }
 
@@ -455,7 +485,7 @@ uint32_t AngleDescent::worstNear() {
 // first that lowers the violation below `now`. With depth > 1 a move that does not is given
 // a second move at the worst triangle near it (a look-ahead: a corner often needs two points
 // before either helps). What is not kept is put back as it was.
-bool AngleDescent::fix(uint32_t t, int depth, double& now) {
+bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
   std::vector<Move> moves;
   movesFor(t, moves);
   for (const Move& m : moves) {
@@ -463,19 +493,27 @@ bool AngleDescent::fix(uint32_t t, int depth, double& now) {
     --movesLeft_;
     saved_.push_back(s_);
     touched_.clear();
+    changed_.clear();
     s_.T.touched = &touched_;
     const bool changed = apply(m);
     s_.T.touched = nullptr;
     if (changed) {
+      if (m.kind == Move::Remove) changed_.push_back(m.what);
+      for (uint32_t x : touched_)
+        for (int k = 0; k < 3; ++k)
+          if (!s_.T.isFree(x) && s_.T.tri[3 * x + k] != kGhost) changed_.push_back(s_.T.tri[3 * x + k]);
+      recording_ = true;
       smoothAround(touched_);
-      const double after = violation();
+      recording_ = false;
+      const double after =
+          current + violationNearChanges(s_) - violationNearChanges(saved_.back());
       if (after < now - 1e-12) {
         now = after;
         saved_.pop_back();
         return true;
       }
       const uint32_t u = depth > 1 ? worstNear() : kNone;
-      if (u != kNone && fix(u, depth - 1, now)) {
+      if (u != kNone && fix(u, depth - 1, now, after)) {
         saved_.pop_back();
         return true;
       }
@@ -503,7 +541,7 @@ size_t AngleDescent::repair(int depth) {
     if (job_.limits->reached(T.vertexCount()) || job_.budget.stop() || movesLeft_ == 0) break;
     const uint32_t* c = &T.tri[3 * x.t];
     if (c[0] != x.a || c[1] != x.b || c[2] != x.c || !job_.target.misses(s_, x.t)) continue;
-    kept += fix(x.t, depth, now);
+    kept += fix(x.t, depth, now, now);
   }
   return kept;
 }

@@ -59,11 +59,13 @@ class AngleDescent {
   bool apply(const Move& m);
   bool insertFree(uint32_t from, const double* x);
   uint32_t worstNear();
-  bool fix(uint32_t t, int depth, double& now);
+  bool fix(uint32_t t, int depth, double& now, double current);
   bool unstick(double& least);
   size_t repair(int depth);
   bool optimise(uint32_t v);
+  double violationOf(const RefineState& s, uint32_t t) const;
   double violation() const;
+  double violationNearChanges(const RefineState& s);
   void smoothAround(const std::vector<uint32_t>& touched);
   uint32_t longestEdge(uint32_t t) const;
   size_t flipPass();
@@ -83,6 +85,10 @@ class AngleDescent {
   std::vector<double> best_, try_;  // margins (scratch)
   std::vector<RefineState> saved_;  // fix()'s, one per depth
   std::vector<uint32_t> touched_, near_;
+  // While a move is judged (fix()): every vertex whose star it changed, and the triangle slots
+  // around them (scratch).
+  bool recording_ = false;
+  std::vector<uint32_t> changed_, slots_;
 };
 
 }  // namespace acutemesh::detail

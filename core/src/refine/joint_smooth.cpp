@@ -31,7 +31,12 @@ bool moverOf(const RefineState& s, uint32_t v, Mover& m) {
   int fixedSpokes = 0;
   uint32_t e0 = T.vertexEdge[v], e = e0;
   do {
-    if (T.isGhost(e / 3)) return false;
+    // (A point on the hull has ghost triangles, outside; its hull edges still count.)
+    if (T.isGhost(e / 3) && !onSegment) return false;
+    if (T.tri[next(e)] == kGhost) {
+      e = T.opp[prev(e)];
+      continue;
+    }
     const double* w = T.point(T.tri[next(e)]);
     m.scale2 = std::min(m.scale2, dist2(T.point(v), w));
     if (T.isFixed(e)) {
@@ -79,8 +84,10 @@ bool valid(const Triangulation& T, const std::vector<Mover>& movers, double minE
     uint32_t e0 = T.vertexEdge[m.v], e = e0;
     do {
       const uint32_t* c = &T.tri[3 * (e / 3)];
-      if (orient2d(T.point(c[0]), T.point(c[1]), T.point(c[2])) <= 0) return false;
-      if (dist2(T.point(m.v), T.point(T.tri[next(e)])) < minEdge2) return false;
+      const uint32_t w = T.tri[next(e)];
+      if (!T.isGhost(e / 3) && orient2d(T.point(c[0]), T.point(c[1]), T.point(c[2])) <= 0)
+        return false;
+      if (w != kGhost && dist2(T.point(m.v), T.point(w)) < minEdge2) return false;
       e = T.opp[prev(e)];
     } while (e != e0);
   }

@@ -124,6 +124,9 @@ constexpr double kDirectFrom = 85;
 constexpr double kBelow90Points = 8;
 // A graded descent refines away, before each bound L, the angles under 180 - 2 L + this.
 constexpr double kGradedRoom = 4;
+// Of two meshes that miss a bound below 90, the one with fewer points is kept unless the
+// other's largest angle is smaller by this many degrees or more.
+constexpr double kCandidateEven = 0.1;
 // --max-angle auto aims for the domain's floor plus this.
 constexpr double kAutoMargin = 0.5;
 
