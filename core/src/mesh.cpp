@@ -421,6 +421,30 @@ class PhaseClock {
   double start_ = 0;
 };
 
+// Why no triangle is inside (T's domain, classified with `options`, is empty): what the fill
+// rule removed, and what would keep some.
+std::string emptyDomainMessage(const Triangulation& T, const Pslg& input, const Options& options,
+                               bool keepHull) {
+  const std::string start = "the domain is empty: ";
+  if (options.fill != FillRule::Triangle)
+    return start + "no region " +
+           (options.fill == FillRule::EvenOdd ? "lies inside an odd number of rings (fill 'evenodd')"
+                                              : "has a non-zero winding number (fill 'nonzero')") +
+           "; the segments enclose no area";
+  // Without the hole points, is anything left? Then they removed it.
+  std::vector<std::string> ignored;
+  Pslg noHoles = input;
+  noHoles.holes.clear();
+  const std::vector<uint8_t> kept = detail::classifyDomain(T, noHoles, options, keepHull, ignored);
+  if (std::find(kept.begin(), kept.end(), uint8_t(1)) != kept.end())
+    return start + (input.holes.size() == 2 ? "the hole point's region is"
+                                            : "the hole points' regions are") +
+           " all of it (a hole point in the wrong place?)";
+  return start + "fill 'triangle' removes every triangle reachable from outside the convex hull "
+                 "without crossing a segment, and the segments enclose no area (close the "
+                 "boundary with segments, or keep the hull with convexHull / --convex-hull)";
+}
+
 // The Delaunay triangulation of the input's vertices (inputOf: T's vertex k is input vertex
 // inputOf[k]), its segments inserted unless the mode is Delaunay, and the domain's triangles
 // marked in `inside`.
@@ -451,6 +475,8 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   inside = detail::classifyDomain(T, constrained ? input : Pslg{}, domainOptions, keepHull,
                                   stats.warnings);
   clock.end("domain");
+  if (std::find(inside.begin(), inside.end(), uint8_t(1)) == inside.end())
+    return {Status::BadInput, emptyDomainMessage(T, input, domainOptions, keepHull)};
   return {};
 }
 
@@ -508,8 +534,6 @@ Result meshInRange(const Pslg& input, const Options& options) {
   stats.triangles = uint32_t(result.mesh.triangleCount());
   stats.segments = uint32_t(result.mesh.segments.size() / 2);
   stats.steiner = stats.vertices - stats.inputVertices;
-  if (stats.triangles == 0)
-    stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
   double largestArea = measureAngles(T, inside, exact, stats);
   if (refining) certify(target, options.maxAngle, largestArea, exactAt, stats, result);
   if (belowFloor) reportBelowFloor(options.maxAngle, result);
