@@ -51,3 +51,56 @@ test('toPoly and toJSON read back as the same domain (an enclave holding an isla
     }
   }
 });
+
+// A gear: 40 teeth around a round hole (as tests/cpp/test_progress.cpp). Below 90 degrees its
+// descent runs for seconds.
+function gear() {
+  const points = [], segments = [];
+  for (let i = 0; i < 40; ++i)
+    for (const [f, r] of [[0, 9], [0.2, 10], [0.5, 10], [0.7, 9]]) {
+      const a = 2 * Math.PI * (i + f) / 40;
+      points.push(r * Math.cos(a), r * Math.sin(a));
+    }
+  for (let k = 0; k < 30; ++k) points.push(3 * Math.cos(2 * Math.PI * k / 30), 3 * Math.sin(2 * Math.PI * k / 30));
+  for (let k = 0; k < 160; ++k) segments.push(k, (k + 1) % 160);
+  for (let k = 0; k < 30; ++k) segments.push(160 + k, 160 + (k + 1) % 30);
+  return { points, segments, holes: [0, 0] };
+}
+
+const refining = (phase) => phase === 'refine' || phase === 'improve';
+
+test('progress: a fraction in [0, 1] that never goes down, reported often', () => {
+  const reports = [];
+  const start = performance.now();
+  am.mesh({ points: randomPoints(5000, 7) }, {
+    mode: 'acute',
+    onProgress: (p) => reports.push({ at: (performance.now() - start) / 1000, ...p }),
+  });
+  const seconds = (performance.now() - start) / 1000;
+  const during = reports.filter((p) => refining(p.phase));
+  let last = 0;
+  for (const p of during) {
+    assert.ok(p.fraction >= last && p.fraction <= 1, `${p.phase} ${p.fraction} after ${last}`);
+    last = p.fraction;
+  }
+  assert.ok(new Set(during.map((p) => p.fraction)).size >= 5, 'the fraction moves');
+  // One report per 40 ms of work; a busy machine may stretch that, so ask for a fifth of it.
+  assert.ok(during.length >= 0.2 * seconds / 0.04, `${during.length} reports in ${seconds} s`);
+});
+
+test('progress: an abort from onProgress lands soon, also below 90 degrees', () => {
+  for (const [pslg, maxAngle] of [[{ points: randomPoints(10000, 5) }, 90], [gear(), 80]]) {
+    const controller = new AbortController();
+    const start = performance.now();
+    const since = () => (performance.now() - start) / 1000;
+    assert.throws(() => am.mesh(pslg, {
+      mode: 'acute',
+      maxAngle,
+      signal: controller.signal,
+      // The user decides to stop 0.3 s into the refinement.
+      onProgress: (p) => { if (refining(p.phase) && since() > 0.3) controller.abort(); },
+    }), { name: 'AbortError' });
+    // Reports every 40 ms and a stop at the next poll; 0.5 s leaves room for a busy machine.
+    assert.ok(since() - 0.3 < 0.5, `max angle ${maxAngle}: ended at ${since()} s`);
+  }
+});

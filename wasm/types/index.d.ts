@@ -77,7 +77,7 @@ export interface ParsedPslg extends Pslg {
 export interface Progress {
   /** 'delaunay', 'segments', 'domain', 'refine', 'improve' or 'output'. */
   phase: string;
-  /** 0..1 within the phase, or -1 when unknown. */
+  /** 0..1 within the phase, or -1 when unknown; 'refine' and 'improve' share one fraction of the refinement, which never goes down. */
   fraction: number;
   /** Current vertex count (0 when not known). */
   vertices: number;
