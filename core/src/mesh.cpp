@@ -431,11 +431,13 @@ class PhaseClock {
 std::string emptyDomainMessage(const Triangulation& T, const Pslg& input, const Options& options,
                                bool keepHull) {
   const std::string start = "the domain is empty: ";
-  if (options.fill != FillRule::Triangle)
+  if (options.fill != FillRule::Triangle) {
+    const bool evenOdd = options.fill == FillRule::EvenOdd;
     return start + "no region " +
-           (options.fill == FillRule::EvenOdd ? "lies inside an odd number of rings (fill 'evenodd')"
-                                              : "has a non-zero winding number (fill 'nonzero')") +
+           (evenOdd ? "lies inside an odd number of rings (fill 'evenodd')"
+                    : "has a non-zero winding number (fill 'nonzero')") +
            "; the segments enclose no area";
+  }
   // Without the hole points, is anything left? Then they removed it.
   std::vector<std::string> ignored;
   Pslg noHoles = input;

@@ -86,7 +86,13 @@ TEST(IoRoundTrip, PolyAndJsonReadBackAsTheSameDomain) {
       {"A.poly", with(Mode::Acute), 1},
       {"naca0012.poly", with(Mode::Quality), 1},
       // Rings under the non-zero rule: the letters' counters become holes.
-      {"acute-text.json", [] { Options o = with(Mode::Cdt); o.fill = FillRule::NonZero; return o; }(), 2},
+      {"acute-text.json",
+       [] {
+         Options o = with(Mode::Cdt);
+         o.fill = FillRule::NonZero;
+         return o;
+       }(),
+       2},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.file) + " " + nameOf(c.options.mode) +
@@ -96,12 +102,14 @@ TEST(IoRoundTrip, PolyAndJsonReadBackAsTheSameDomain) {
     applyInputPolicy(in, {true, false}, options);
     const Result r = mesh(in.pslg, options);
     ASSERT_NE(r.status, Status::BadInput) << r.message;
-    expectSameDomain("poly", formatPoly(r.mesh),
-                     [](const std::string& t, Input& out) { return parsePoly(t, "m.poly", out); },
-                     r.mesh, c.holes);
-    expectSameDomain("json", formatJson(r.mesh),
-                     [](const std::string& t, Input& out) { return parseJson(t, "m.json", out); },
-                     r.mesh, c.holes);
+    expectSameDomain(
+        "poly", formatPoly(r.mesh),
+        [](const std::string& t, Input& out) { return parsePoly(t, "m.poly", out); }, r.mesh,
+        c.holes);
+    expectSameDomain(
+        "json", formatJson(r.mesh),
+        [](const std::string& t, Input& out) { return parseJson(t, "m.json", out); }, r.mesh,
+        c.holes);
   }
 }
 
@@ -114,9 +122,9 @@ TEST(IoRoundTrip, HolePointOfASliverHole) {
   square.holes = {0.7, 0.5};
   const Result r = mesh(square, with(Mode::Cdt));
   ASSERT_EQ(r.status, Status::Ok) << r.message;
-  expectSameDomain("poly", formatPoly(r.mesh),
-                   [](const std::string& t, Input& out) { return parsePoly(t, "m.poly", out); },
-                   r.mesh, 1);
+  expectSameDomain(
+      "poly", formatPoly(r.mesh),
+      [](const std::string& t, Input& out) { return parsePoly(t, "m.poly", out); }, r.mesh, 1);
 }
 
 }  // namespace

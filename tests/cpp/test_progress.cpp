@@ -18,7 +18,9 @@ using namespace acutemesh;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 Pslg randomPoints(int n) {
   std::mt19937_64 rng(9);
@@ -38,7 +40,8 @@ Pslg gear() {
       in.points.insert(in.points.end(), {r * std::cos(a), r * std::sin(a)});
     }
   for (int k = 0; k < hole; ++k)
-    in.points.insert(in.points.end(), {3 * std::cos(2 * M_PI * k / hole), 3 * std::sin(2 * M_PI * k / hole)});
+    in.points.insert(in.points.end(),
+                     {3 * std::cos(2 * M_PI * k / hole), 3 * std::sin(2 * M_PI * k / hole)});
   const uint32_t outer = 4 * teeth;
   for (uint32_t k = 0; k < outer; ++k) in.segments.insert(in.segments.end(), {k, (k + 1) % outer});
   for (uint32_t k = 0; k < uint32_t(hole); ++k)

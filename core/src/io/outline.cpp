@@ -92,15 +92,18 @@ std::vector<double> holePoints(const Mesh& m, const std::vector<uint64_t>& edges
   std::vector<std::pair<uint64_t, uint32_t>> halves;
   halves.reserve(tri.size());
   for (uint32_t t = 0; t < count; ++t)
-    for (int k = 0; k < 3; ++k) halves.push_back({undirected(tri[3 * t + k], tri[3 * t + (k + 1) % 3]), t});
+    for (int k = 0; k < 3; ++k)
+      halves.push_back({undirected(tri[3 * t + k], tri[3 * t + (k + 1) % 3]), t});
   std::sort(halves.begin(), halves.end());
   UnionFind regions(count);
   std::vector<uint8_t> open(count, 0);
   for (size_t i = 0; i < halves.size(); ++i) {
     const bool paired = i + 1 < halves.size() && halves[i + 1].first == halves[i].first;
     if (!contains(fixed, halves[i].first)) {
-      if (paired) regions.join(halves[i].second, halves[i + 1].second);
-      else open[halves[i].second] = 1;
+      if (paired)
+        regions.join(halves[i].second, halves[i + 1].second);
+      else
+        open[halves[i].second] = 1;
     }
     i += paired;
   }
@@ -113,8 +116,10 @@ std::vector<double> holePoints(const Mesh& m, const std::vector<uint64_t>& edges
     for (int k = 0; k < 3; ++k) {
       const uint32_t a = tri[3 * t + k], b = tri[3 * t + (k + 1) % 3];
       if (side[root] != kUnknown || !contains(fixed, undirected(a, b))) continue;
-      if (contains(edges, directed(a, b))) side[root] = kInMesh;
-      else if (contains(edges, directed(b, a))) side[root] = kOutside;
+      if (contains(edges, directed(a, b)))
+        side[root] = kInMesh;
+      else if (contains(edges, directed(b, a)))
+        side[root] = kOutside;
     }
   }
   // Per hole, the largest of its triangles whose centroid is strictly inside it.
