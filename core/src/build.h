@@ -9,19 +9,25 @@
 
 #include "acutemesh/acutemesh.h"
 #include "exact.h"
+#include "progress.h"
 #include "triangulation.h"
 
 namespace acutemesh::detail {
 
-// Time limit and cancel flag of one mesh() call, polled by long loops.
+// Time limit and cancel flag of one mesh() call, polled by long loops; each poll also lets
+// the progress relay (when there is one) report, so a callback that cancels is heard soon.
 class Budget {
  public:
-  explicit Budget(const Options& o)
-      : cancel_(o.cancel), start_(std::chrono::steady_clock::now()), limit_(o.timeLimit) {}
+  explicit Budget(const Options& o, ProgressRelay* progress = nullptr)
+      : cancel_(o.cancel), start_(std::chrono::steady_clock::now()), limit_(o.timeLimit),
+        progress_(progress) {}
   double elapsed() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
-  bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+  bool cancelled() const {
+    if (progress_) progress_->poll();
+    return cancel_ && cancel_->load(std::memory_order_relaxed);
+  }
   bool outOfTime() const { return limit_ > 0 && elapsed() > limit_; }
   bool stop() const { return cancelled() || outOfTime(); }
 
@@ -29,6 +35,11 @@ class Budget {
   const std::atomic<bool>* cancel_;
   std::chrono::steady_clock::time_point start_;
   double limit_;
+  ProgressRelay* progress_;
+
+ public:
+  // The relay, for the steps that note their progress (null without Options::progress).
+  ProgressRelay* progress() const { return progress_; }
 };
 
 struct StepResult {

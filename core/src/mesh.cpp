@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <new>
 #include <stdexcept>
 
@@ -402,16 +403,20 @@ std::string checkOptions(const Options& options) {
   return {};
 }
 
-// Times each phase into Stats::phases and reports its end to Options::progress.
+// Times each phase into Stats::phases and reports its end to Options::progress; the phase
+// that follows (`next`) is what the reports until its end name.
 class PhaseClock {
  public:
   PhaseClock(const Budget& budget, const Options& options, Stats& stats)
-      : budget_(budget), options_(options), stats_(stats) {}
-  void end(const char* name) {
+      : budget_(budget), options_(options), stats_(stats) {
+    if (budget_.progress()) budget_.progress()->note("delaunay", -1, 0);
+  }
+  void end(const char* name, const char* next = nullptr) {
     double now = budget_.elapsed();
     stats_.phases.push_back({name, now - start_});
     start_ = now;
     if (options_.progress) options_.progress({name, 1.0, 0});
+    if (next && budget_.progress()) budget_.progress()->note(next, -1, 0);
   }
 
  private:
@@ -420,6 +425,32 @@ class PhaseClock {
   Stats& stats_;
   double start_ = 0;
 };
+
+// Why no triangle is inside (T's domain, classified with `options`, is empty): what the fill
+// rule removed, and what would keep some.
+std::string emptyDomainMessage(const Triangulation& T, const Pslg& input, const Options& options,
+                               bool keepHull) {
+  const std::string start = "the domain is empty: ";
+  if (options.fill != FillRule::Triangle) {
+    const bool evenOdd = options.fill == FillRule::EvenOdd;
+    return start + "no region " +
+           (evenOdd ? "lies inside an odd number of rings (fill 'evenodd')"
+                    : "has a non-zero winding number (fill 'nonzero')") +
+           "; the segments enclose no area";
+  }
+  // Without the hole points, is anything left? Then they removed it.
+  std::vector<std::string> ignored;
+  Pslg noHoles = input;
+  noHoles.holes.clear();
+  const std::vector<uint8_t> kept = detail::classifyDomain(T, noHoles, options, keepHull, ignored);
+  if (std::find(kept.begin(), kept.end(), uint8_t(1)) != kept.end())
+    return start + (input.holes.size() == 2 ? "the hole point's region is"
+                                            : "the hole points' regions are") +
+           " all of it (a hole point in the wrong place?)";
+  return start + "fill 'triangle' removes every triangle reachable from outside the convex hull "
+                 "without crossing a segment, and the segments enclose no area (close the "
+                 "boundary with segments, or keep the hull with convexHull / --convex-hull)";
+}
 
 // The Delaunay triangulation of the input's vertices (inputOf: T's vertex k is input vertex
 // inputOf[k]), its segments inserted unless the mode is Delaunay, and the domain's triangles
@@ -439,25 +470,36 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   if (stats.duplicates)
     stats.warnings.push_back(std::to_string(stats.duplicates) +
                              " duplicate vertices merged into earlier equal ones");
-  clock.end("delaunay");
+  clock.end("delaunay", constrained ? "segments" : "domain");
   if (constrained) {
     step = detail::insertSegments(T, input, canonical, stats, budget);
     if (!step.ok()) return step;
-    clock.end("segments");
+    clock.end("segments", "domain");
   }
   Options domainOptions = options;
   if (!constrained) domainOptions.fill = FillRule::Triangle;
   const bool keepHull = !constrained || options.convexHull || input.segments.empty();
   inside = detail::classifyDomain(T, constrained ? input : Pslg{}, domainOptions, keepHull,
                                   stats.warnings);
-  clock.end("domain");
+  const bool refining = options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
+                        options.mode == Mode::Acute;
+  clock.end("domain", refining ? "refine" : "output");
+  if (std::find(inside.begin(), inside.end(), uint8_t(1)) == inside.end())
+    return {Status::BadInput, emptyDomainMessage(T, input, domainOptions, keepHull)};
   return {};
 }
 
-Result meshInRange(const Pslg& input, const Options& options) {
+Result meshInRange(const Pslg& input, const Options& asked) {
   Result result;
   Stats& stats = result.stats;
-  Budget budget(options);
+  // The steps report through the relay (progress.h), which the budget's polls let report too.
+  Options options = asked;
+  std::unique_ptr<detail::ProgressRelay> relay;
+  if (asked.progress) {
+    relay = std::make_unique<detail::ProgressRelay>(asked.progress);
+    options.progress = [r = relay.get()](const Progress& p) { r->report(p); };
+  }
+  Budget budget(options, relay.get());
   stats.inputVertices = uint32_t(input.vertexCount());
   stats.inputSegments = uint32_t(input.segmentCount());
   stats.inputHoles = uint32_t(input.holes.size() / 2);
@@ -495,7 +537,7 @@ Result meshInRange(const Pslg& input, const Options& options) {
     if (belowFloor) target.maxAngle = kAutoMaxAngle;
     step = detail::refine(T, input, target, budget, freeVertex, exact);
     inside = std::move(T.inside);
-    clock.end("refine");
+    clock.end("refine", "output");
     if (step.status == Status::Cancelled || step.status == Status::TargetNotMet) {
       result.status = step.status;
       result.message = step.message;
@@ -508,8 +550,6 @@ Result meshInRange(const Pslg& input, const Options& options) {
   stats.triangles = uint32_t(result.mesh.triangleCount());
   stats.segments = uint32_t(result.mesh.segments.size() / 2);
   stats.steiner = stats.vertices - stats.inputVertices;
-  if (stats.triangles == 0)
-    stats.warnings.push_back("the domain is empty: no triangle is inside the segments");
   double largestArea = measureAngles(T, inside, exact, stats);
   if (refining) certify(target, options.maxAngle, largestArea, exactAt, stats, result);
   if (belowFloor) reportBelowFloor(options.maxAngle, result);

@@ -84,6 +84,19 @@ check "svg is svg" grep -q '<svg' "$work/all.svg"
 check "off header" grep -q '^OFF' "$work/all.off"
 check "written .poly reads back" run 0 --no-output "$work/all.poly"
 
+# Written .poly and JSON read back as the same domain: holes (an enclave holding an island, an
+# island far off) and a kept convex hull included. triangles_of ARGS...: the triangle count.
+triangles_of() { "$cli" --stats --no-output "$@" 2>/dev/null | grep -o '"triangles": [0-9]*'; }
+for args in "--mode acute" "--mode cdt --convex-hull" "--mode quality"; do
+  # shellcheck disable=SC2086
+  check "round trip $args: mesh" run 0 $args --format poly,json -o "$work/enclave" "$data/io/enclave.poly"
+  # shellcheck disable=SC2086
+  want=$(triangles_of $args "$data/io/enclave.poly")
+  check "round trip $args: .poly has the hole point" grep -q '^1$' "$work/enclave.poly"
+  check "round trip $args: .poly reads back ($want)" test "$(triangles_of "$work/enclave.poly")" = "$want"
+  check "round trip $args: JSON reads back ($want)" test "$(triangles_of "$work/enclave.json")" = "$want"
+done
+
 check "delaunay mode" run 0 --mode delaunay --stats --no-output "$work/A.poly"
 check "delaunay keeps the hull" stdout_has '"triangles": 48'  # 2n - 2 - 8 hull vertices
 check "convex hull" run 0 --convex-hull --stats --no-output "$work/A.poly"
@@ -206,9 +219,13 @@ check "bad: star burst meshes" run 0 --stats --no-output "$bad/star-burst-crossi
 check "bad: star burst crossings" stderr_has "segment crossings split at new vertices"
 check "bad: 1e300 acute" run 0 --mode acute --stats --no-output "$bad/enormous-scale-1e300.poly"
 check "bad: 1e300 certified" stdout_has '"certified": true'
-check "bad: hole eats all" run 0 --stats --no-output "$bad/hole-eats-everything.poly"
-check "bad: hole eats all, 0 triangles" stdout_has '"triangles": 0'
-check "bad: hole eats all warns" stderr_has "the domain is empty"
+# An empty domain is an error that says what emptied it.
+check "bad: hole eats all" one_error hole-eats-everything.poly "the domain is empty: the hole point's region is all of it"
+printf '4 2 0 0\n0 0 0\n1 4 0\n2 4 3\n3 0 3\n1 0\n0 0 2\n0\n' >"$work/one-segment.poly"
+check "empty domain: exit 2" run 2 --no-output "$work/one-segment.poly"
+check "empty domain: names the fill rule and the hull" stderr_has "fill 'triangle' removes every triangle reachable from outside the convex hull"
+check "empty domain: names the way out" stderr_has "--convex-hull"
+check "empty domain: convex hull meshes it" run 0 --convex-hull --no-output "$work/one-segment.poly"
 
 # --- limits: a tiny time limit on a big job ends soon, exit 1, with the best mesh written ---
 awk 'BEGIN { srand(7); n = 50000; print n, 2, 0, 0;

@@ -77,7 +77,7 @@ export interface ParsedPslg extends Pslg {
 export interface Progress {
   /** 'delaunay', 'segments', 'domain', 'refine', 'improve' or 'output'. */
   phase: string;
-  /** 0..1 within the phase, or -1 when unknown. */
+  /** 0..1 within the phase, or -1 when unknown; 'refine' and 'improve' share one fraction of the refinement, which never goes down. */
   fraction: number;
   /** Current vertex count (0 when not known). */
   vertices: number;
@@ -347,7 +347,7 @@ export interface AcuteMesh {
   parseJson(text: string, options?: ParseOptions): ParsedPslg;
   /** Closed rings (GeoJSON polygon coordinates, font contours) into a PSLG; a repeated last point is dropped. */
   fromRings(rings: ReadonlyArray<Ring>, options?: RingsOptions): Pslg & { fill: FillRule };
-  /** Throws AcuteMeshError('BAD_INPUT') for bad input; a missed target is not an error (see MeshResult.status). */
+  /** Throws AcuteMeshError('BAD_INPUT') for bad input and for an empty domain (the message says what removed every triangle); a missed target is not an error (see MeshResult.status). */
   mesh(pslg: PslgInput, options?: MeshOptions): MeshResult;
   /** The core's exact checks of a mesh against its input (options default to the mesh's). */
   validate(pslg: PslgInput, mesh: MeshInput, options?: ValidateOptions): Validation;

@@ -62,16 +62,20 @@ ParseResult readInputFile(const std::string& path, Input& out);
 
 // Writers return the text. Coordinates are written to read back as the same doubles
 // (shortest round-trip form). .node/.ele/.poly number vertices and items from 0 (as Triangle's
-// -z), which their first line states as a comment; OBJ is 1-based by definition. .poly holds
-// the mesh vertices, the mesh's segment edges and no holes. OFF and OBJ put z = 0. SVG fits
+// -z), which their first line states as a comment; OBJ is 1-based by definition. .poly and
+// JSON read back (parsePoly, parseJson, fill 'triangle') as the mesh's own domain: they hold
+// the mesh vertices, the mesh's segment edges followed by its boundary edges on no input
+// segment (the hull edges of a convexHull or Delaunay mesh), and a hole point strictly inside
+// each bounded region outside the mesh (finding them costs a constrained triangulation of
+// the mesh's vertices when there are holes). OFF and OBJ put z = 0. SVG fits
 // the bounding box into a 1000-unit view with y pointing up (coordinates rounded to 0.01),
 // triangles in one path, segment edges drawn thicker. writeMeshFiles writes BASE.EXT for each
 // format (EXT = the format name); an unknown name fails before anything is written.
 std::string formatNode(const Mesh& m);
 std::string formatEle(const Mesh& m);
-std::string formatPoly(const Mesh& m);  // mesh vertices plus its segment edges
-// {"vertices": [[x,y]...], "triangles": [[a,b,c]...], "segments": [...]}, and when the mesh
-// has exact points (Options::exactFeet) "exactPoints": [[vertex, "x", "y"]...] (decimal
+std::string formatPoly(const Mesh& m);  // mesh vertices, segment and boundary edges, holes
+// {"vertices": [[x,y]...], "triangles": [[a,b,c]...], "segments": [...]}, "holes": [[x,y]...]
+// when the mesh has holes (segments and holes as in .poly), and when the mesh has exact points (Options::exactFeet) "exactPoints": [[vertex, "x", "y"]...] (decimal
 // rationals "p/q" or integers "p": the exact place of those vertices).
 std::string formatJson(const Mesh& m);
 std::string formatOff(const Mesh& m);

@@ -16,6 +16,7 @@
 
 #include "acutemesh/io.h"
 #include "../exact.h"
+#include "outline.h"
 
 #if defined(__cpp_lib_to_chars) && !defined(ACUTEMESH_NO_FLOAT_CHARCONV)
 #define ACUTEMESH_FLOAT_TO_CHARS 1
@@ -218,23 +219,38 @@ std::string formatEle(const Mesh& m) {
   return s;
 }
 
+// The mesh's segment edges, then its boundary edges on none (a hull kept), and a point in
+// each hole: read back with fill 'triangle', the domain is the mesh's own.
 std::string formatPoly(const Mesh& m) {
+  const io::Outline outline = io::outlineOf(m);
   std::string s;
-  const size_t e = m.segments.size() / 2;
-  s.reserve(pointsBytes(m) + e * 32 + 64);
+  const size_t e = m.segments.size() / 2, extra = outline.boundary.size() / 2;
+  const size_t holes = outline.holes.size() / 2;
+  s.reserve(pointsBytes(m) + (e + extra) * 32 + holes * 48 + 64);
   s += kTriangleHeader;
   putNodeSection(s, m);
-  putUint(s, e);
+  putUint(s, e + extra);
   s += " 0\n";
-  for (size_t i = 0; i < e; ++i) {
+  for (size_t i = 0; i < e + extra; ++i) {
+    const uint32_t* ab = i < e ? &m.segments[2 * i] : &outline.boundary[2 * (i - e)];
+    if (i == e) s += "# boundary edges on no input segment\n";
     putUint(s, i);
     s += ' ';
-    putUint(s, m.segments[2 * i]);
+    putUint(s, ab[0]);
     s += ' ';
-    putUint(s, m.segments[2 * i + 1]);
+    putUint(s, ab[1]);
     s += '\n';
   }
-  s += "0\n";  // holes: the mesh itself says what is inside
+  putUint(s, holes);
+  s += '\n';
+  for (size_t i = 0; i < holes; ++i) {
+    putUint(s, i);
+    s += ' ';
+    putDouble(s, outline.holes[2 * i]);
+    s += ' ';
+    putDouble(s, outline.holes[2 * i + 1]);
+    s += '\n';
+  }
   return s;
 }
 
@@ -261,16 +277,30 @@ std::string formatJson(const Mesh& m) {
     putUint(s, m.triangles[3 * i + 2]);
     s += ']';
   }
+  // Segments and holes as formatPoly writes them: the file reads back as the same domain.
+  const io::Outline outline = io::outlineOf(m);
   s += "],\n\"segments\": [";
-  const size_t e = m.segments.size() / 2;
-  for (size_t i = 0; i < e; ++i) {
+  const size_t e = m.segments.size() / 2, extra = outline.boundary.size() / 2;
+  for (size_t i = 0; i < e + extra; ++i) {
+    const uint32_t* ab = i < e ? &m.segments[2 * i] : &outline.boundary[2 * (i - e)];
     s += i ? ",\n[" : "\n[";
-    putUint(s, m.segments[2 * i]);
+    putUint(s, ab[0]);
     s += ',';
-    putUint(s, m.segments[2 * i + 1]);
+    putUint(s, ab[1]);
     s += ']';
   }
   s += ']';
+  if (!outline.holes.empty()) {
+    s += ",\n\"holes\": [";
+    for (size_t i = 0; i < outline.holes.size() / 2; ++i) {
+      s += i ? ",\n[" : "\n[";
+      putJsonDouble(s, outline.holes[2 * i]);
+      s += ',';
+      putJsonDouble(s, outline.holes[2 * i + 1]);
+      s += ']';
+    }
+    s += ']';
+  }
   if (!m.exactPoints.empty()) {
     s += ",\n\"exactPoints\": [";
     for (size_t i = 0; i < m.exactPoints.size(); ++i) {

@@ -33,6 +33,10 @@ struct RunLimits {
   }
 };
 
+// A run's progress (ProgressRelay::note): its repairs up to this fraction, then the removal
+// of the points not needed.
+constexpr double kRepairShare = 0.7;
+
 struct Job {
   const Pslg& input;
   const Options& options;
@@ -48,6 +52,10 @@ struct Job {
   }
   // Options::progress is called on the reporting thread only.
   bool reportsProgress() const { return limits->reportProgress && bool(options.progress); }
+  // Lets the progress relay report, from long loops that do not poll the budget.
+  void pollProgress() const {
+    if (reportsProgress() && budget.progress()) budget.progress()->poll();
+  }
 };
 
 }  // namespace acutemesh::detail

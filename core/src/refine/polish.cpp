@@ -1,6 +1,7 @@
 #include "polish.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "refiner.h"
 #include "threads.h"
@@ -13,6 +14,9 @@ void Polish::run() {
   const size_t inputVertices = job_.input.vertexCount();
   int idleRounds = 0;  // the last rounds in a row that took out no point
   for (int r = 0; r < kPolishRounds && !job_.budget.stop(); ++r) {
+    // (Progress: each round half of what is left, as the rounds that end it are not known.)
+    const ProgressRelay::Part part(job_.reportsProgress() ? job_.budget.progress() : nullptr,
+                                   1 - std::ldexp(1.0, -r), 1 - std::ldexp(1.0, -r - 1));
     size_t before = s_.liveSteiner(inputVertices);
     RefineState saved = s_;
     if (before >= kSmallPolish)
@@ -64,6 +68,7 @@ void Polish::round(bool removeAfterMerging) {
 void Polish::smooth() {
   const Scope& scope = reduce_.scope;
   for (uint32_t v = uint32_t(job_.input.vertexCount()); v < s_.T.vertexCount(); ++v) {
+    if ((v & 255) == 0) job_.pollProgress();
     if (s_.T.vertexEdge[v] == kNone || (s_.role[v] != kFree && s_.role[v] != kOnSegment) ||
         !scope.owns(v))
       continue;

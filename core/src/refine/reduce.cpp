@@ -239,12 +239,11 @@ void Reduce::markChanged() {
 
 // Polled once per removal or merge attempt: whether a budget has run out or the run was
 // cancelled. Now and then it reports progress (phase "improve", the vertices in the mesh).
-bool Reduce::shouldStop() {
+bool Reduce::shouldStop(double done) {
   if ((++attempts_ & 63) != 0) return false;
-  if (job_.reportsProgress() && (attempts_ & 4095) == 0)
-    job_.options.progress(
-        {"improve", -1,
-         uint32_t(job_.input.vertexCount() + s_.liveSteiner(job_.input.vertexCount()))});
+  if (job_.reportsProgress() && job_.budget.progress())
+    job_.budget.progress()->note("improve", kRepairShare + (1 - kRepairShare) * done,
+                                 s_.T.vertexCount());
   return job_.budget.stop();
 }
 
@@ -256,7 +255,7 @@ void Reduce::removeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
     for (uint32_t v = 0, count = s_.T.vertexCount(); v < count; ++v) {
       if (!dirty_[v] || s_.T.vertexEdge[v] == kNone || !scope.owns(v)) continue;
       dirty_[v] = 0;
-      if (shouldStop()) return;
+      if (shouldStop(double(v) / double(count))) return;
       if (!removePoint(v)) continue;
       ++removed;
       scope.record({Step::Remove, v, kNone, kNone, 0, 0});
@@ -289,7 +288,7 @@ uint32_t Reduce::mergePass() {
         T.vertexEdge[u] == kNone || !scope.owns(u))
       continue;
     dirty_[u] = 0;
-    if (shouldStop()) break;
+    if (shouldStop(1 - double(u) / double(T.vertexCount()))) break;
     // The partners first (free neighbours of a free vertex, the neighbours along its segment
     // of a segment vertex): a failed merge re-inserts u, which renumbers its edges.
     partners_.clear();

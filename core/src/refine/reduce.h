@@ -79,7 +79,8 @@ class Reduce {
   void markChanged();
   void markDue(const std::vector<uint8_t>* due);
   uint32_t mergePass();
-  bool shouldStop();
+  // (done: the share of the current pass gone through, for progress.)
+  bool shouldStop(double done);
 
   RefineState& s_;
   const Job& job_;

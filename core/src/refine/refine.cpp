@@ -44,6 +44,9 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
     return refineOnce(start, input, plain, budget, 0, T, freeVertex, exact).result;
   }
   if (options.mode == Mode::Acute && (options.maxAngle < 90 || options.maxAngle == kAutoMaxAngle)) {
+    // Progress: refineBelow90's own fractions (its starts and levels), not those of the
+    // refinements it runs.
+    const ProgressRelay::Scope level(budget.progress());
     RefineState best;
     StepResult result = refineBelow90(start, input, options, budget, best, exact);
     best.markFree(freeVertex);

@@ -47,6 +47,12 @@ class RepairQueue {
     buckets_[b].push_back(entry);
     top_ = std::max(top_, b + 1);
   }
+  // Entries queued (progress reports only).
+  size_t size() const {
+    size_t n = heap_.size();
+    for (size_t b = 0; b < top_ && rough_; ++b) n += buckets_[b].size();
+    return n;
+  }
   bool pop(Entry& entry) {
     std::vector<Entry>* from = &heap_;
     if (rough_) {

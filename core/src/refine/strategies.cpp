@@ -19,6 +19,8 @@ double steinerBudget(const Pslg& input, const Options& options, double area) {
 
 namespace {
 
+constexpr size_t kPolishRun = SIZE_MAX;  // (progressSpan)
+
 // The strategies for a mode, in the order they run (see docs/TUNING.md for what each saves).
 std::vector<Strategy> strategiesFor(const Options& options) {
   std::vector<Strategy> strategies = {Strategy{}};
@@ -171,6 +173,16 @@ struct Jobs {
   }
 };
 
+// Progress: the runs of the strategies before the fallbacks, `leading` of them, in turn (a
+// fallback counts as the last), then the polish (acute, non-obtuse), which takes about as long.
+void progressSpan(const Budget& budget, const Target& target, size_t run, size_t leading) {
+  if (!budget.progress()) return;
+  const double runs = target.boundsLargest() ? 0.5 : 1;
+  if (run == kPolishRun) return budget.progress()->span(runs, 1);
+  const double share = runs / double(leading), at = double(std::min(run, leading - 1));
+  budget.progress()->span(at * share, (at + 1) * share);
+}
+
 #ifdef ACUTEMESH_THREADS
 // Runs strategies [0, count) on threads, the calling one among them, and hands them to the
 // choice in order: with the same result as running them one after another (so every build,
@@ -228,6 +240,7 @@ class ConcurrentStrategies {
 
   void work(bool caller, size_t i) {
     for (; i != kNoRun; i = claim(caller)) {
+      if (caller) progressSpan(jobs_.budget, jobs_.target, i, slots_.size());
       slots_[i].run.go();
       std::lock_guard<std::mutex> lock(mutex_);
       slots_[i].finished = true;
@@ -277,6 +290,7 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    const Options& options, const Budget& budget,
                                    uint32_t steinerCap, RefineState& out,
                                    std::vector<ExactVertex>& exact) {
+  const ProgressRelay::Scope level(budget.progress());  // (nested: reports no fraction)
   const std::vector<Strategy> strategies = strategiesFor(options);
   const Target target(options);
   const Jobs jobs{input, options, target, budget, strategies, smallestEdge2(input)};
@@ -284,10 +298,10 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   const SteinerLimit limit{start.T.vertexCount(), area, steinerBudget(input, options, area)};
   StrategyChoice choice(start, budget, steinerCap);
   size_t next = 0;
-#ifdef ACUTEMESH_THREADS
-  // The strategies before the fallbacks concurrently, where there are threads to spare.
   size_t leading = 0;
   while (leading < strategies.size() && !strategies[leading].fallback) ++leading;
+#ifdef ACUTEMESH_THREADS
+  // The strategies before the fallbacks concurrently, where there are threads to spare.
   const unsigned threads = threadsFor(options);
   if (threads > 1 && leading > 1) {
     ConcurrentStrategies(start, jobs, limit, leading, choice)
@@ -298,10 +312,12 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   for (; next < strategies.size() && !choice.done(); ++next) {
     if (strategies[next].fallback && choice.best.met) continue;
     StrategyRun run(start, jobs(next), limit, choice.cap());
+    progressSpan(budget, target, next, leading);
     run.go();
     choice.consider(std::move(run));
   }
   StrategyRun& best = choice.best;
+  progressSpan(budget, target, kPolishRun, leading);
   if (best.met) best.refiner().polish();
   RefineOutcome outcome;
   outcome.met = best.met;

@@ -1,0 +1,127 @@
+// Options::progress: a fraction that moves, reports often enough to draw a bar and to cancel
+// from. Timings are asserted loosely (a loaded 2-core machine stretches every gap).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "acutemesh/acutemesh.h"
+
+using namespace acutemesh;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+Pslg randomPoints(int n) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0, 1);
+  Pslg in;
+  for (int i = 0; i < 2 * n; ++i) in.points.push_back(u(rng));
+  return in;
+}
+
+// A gear: 40 teeth around a round hole. Below 90 degrees its descent runs for seconds.
+Pslg gear() {
+  Pslg in;
+  const int teeth = 40, hole = 30;
+  for (int i = 0; i < teeth; ++i)
+    for (const auto& [f, r] : {std::pair{0.0, 9.0}, {0.2, 10.0}, {0.5, 10.0}, {0.7, 9.0}}) {
+      const double a = 2 * M_PI * (i + f) / teeth;
+      in.points.insert(in.points.end(), {r * std::cos(a), r * std::sin(a)});
+    }
+  for (int k = 0; k < hole; ++k)
+    in.points.insert(in.points.end(),
+                     {3 * std::cos(2 * M_PI * k / hole), 3 * std::sin(2 * M_PI * k / hole)});
+  const uint32_t outer = 4 * teeth;
+  for (uint32_t k = 0; k < outer; ++k) in.segments.insert(in.segments.end(), {k, (k + 1) % outer});
+  for (uint32_t k = 0; k < uint32_t(hole); ++k)
+    in.segments.insert(in.segments.end(), {outer + k, outer + (k + 1) % hole});
+  in.holes = {0, 0};
+  return in;
+}
+
+bool refining(const char* phase) {
+  return std::strcmp(phase, "refine") == 0 || std::strcmp(phase, "improve") == 0;
+}
+
+struct Report {
+  double at;
+  std::string phase;
+  double fraction;
+};
+
+// The refinement's fraction is in [0, 1], never goes down, takes many values, and the reports
+// come often: in a run of about a second, the longest gap between two is well under its length.
+TEST(Progress, FractionMovesAndReportsCome) {
+  const Pslg in = randomPoints(10000);
+  Options o;
+  o.mode = Mode::Acute;
+  o.threads = 1;
+  std::vector<Report> reports;
+  const Clock::time_point start = Clock::now();
+  o.progress = [&](const Progress& p) { reports.push_back({since(start), p.phase, p.fraction}); };
+  const Result r = mesh(in, o);
+  const double seconds = since(start);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+
+  std::set<double> values;
+  double last = 0, gap = 0, previous = 0;
+  size_t during = 0;
+  for (const Report& p : reports) {
+    gap = std::max(gap, p.at - previous);
+    previous = p.at;
+    if (!refining(p.phase.c_str())) continue;
+    ++during;
+    EXPECT_GE(p.fraction, 0) << p.phase << " at " << p.at;
+    EXPECT_LE(p.fraction, 1);
+    EXPECT_GE(p.fraction, last) << p.phase << " at " << p.at;
+    last = p.fraction;
+    values.insert(p.fraction);
+  }
+  // One report per 40 ms of work; a busy machine may stretch that, so ask for a fifth of it.
+  EXPECT_GE(double(during), 0.2 * seconds / 0.04) << seconds << " s";
+  EXPECT_GE(values.size(), 5u);
+  EXPECT_LT(gap, std::max(0.5, seconds / 3)) << "of " << seconds << " s";
+}
+
+// A cancel asked for from the callback (as the JavaScript package does: it has no other way in)
+// lands soon, also in the descent below 90 degrees, whose levels take seconds each.
+TEST(Progress, CancelFromTheCallbackLandsSoon) {
+  for (double maxAngle : {90.0, 80.0}) {
+    const Pslg in = maxAngle < 90 ? gear() : randomPoints(20000);
+    std::atomic<bool> cancel{false};
+    Options o;
+    o.mode = Mode::Acute;
+    o.maxAngle = maxAngle;
+    o.threads = 1;
+    o.cancel = &cancel;
+    const Clock::time_point start = Clock::now();
+    double asked = -1;
+    // The user decides to stop 0.3 s into the refinement; the callback is where it can say so.
+    o.progress = [&](const Progress& p) {
+      if (asked < 0 && refining(p.phase) && since(start) > 0.3) {
+        asked = since(start);
+        cancel = true;
+      }
+    };
+    const Result r = mesh(in, o);
+    const double ended = since(start);
+    ASSERT_GE(asked, 0) << maxAngle << ": the run ended after " << ended << " s, before the cancel";
+    EXPECT_EQ(r.status, Status::Cancelled) << maxAngle << ": " << r.message;
+    // Reports every 40 ms, and the core stops at the next poll: 0.5 s leaves room for a busy
+    // machine (before the relay, below 90 degrees it took seconds).
+    EXPECT_LT(ended - 0.3, 0.5) << maxAngle << ": asked at " << asked << " s, ended at " << ended;
+  }
+}
+
+}  // namespace
