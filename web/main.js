@@ -8,7 +8,8 @@ import { loadEngine, meshInWorker, warmUp } from './engine.js';
 import { MeshView } from './view.js';
 import { analyse, CLASSES } from './angles.js';
 import { drawHistogram } from './histogram.js';
-import { AUTO, angleFloor, boundSentence, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
+import { AUTO, angleFloor, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
+import { verdict, formatMs } from './verdict.js';
 import { DrawTool, encodeRings, decodeRings } from './draw.js';
 import { parseFont, textToRings, fontName } from './loaders/font.js';
 import { loadFile } from './loaders/index.js';
@@ -36,6 +37,7 @@ const TEXT_DEFAULTS = { text: 'Acute', font: 'pagella-regular', tol: '5' };
 const view = new MeshView(ui.view);
 const draw = new DrawTool(view, (rings) => {
   current = { type: 'draw', rings };
+  inputChanged();
   showSource(`drawing: ${rings.length} ring${rings.length === 1 ? '' : 's'}`);
   saveUrl();
 });
@@ -48,6 +50,7 @@ let running = null;           // AbortController of the run in progress
 let runs = 0;
 let vocabulary = null;        // the mesher's names and defaults, once it has loaded
 let floorInfo = null;         // the current input's { corner, floor, from: 'input' | 'run' }
+let inputSeq = 0;             // bumped by every input change and run: late previews are dropped
 warmUp();
 const enginePromise = loadEngine();
 enginePromise.then(takeVocabulary, (e) => setStatus(`Could not load the mesher: ${e.message}`, 'error'));
@@ -102,8 +105,7 @@ async function buildInput(src) {
         note: `"${text}" in ${ui.font.selectedOptions[0].text}` };
     }
     case 'file': case 'sample': {
-      const am = await enginePromise.catch(() => null);
-      const input = await loadFile(src.file, { am, tolerance: tolerance() });
+      const input = await readFile(src.file);
       if (input.kind === 'font') throw new Error('a font sets the text: type in the Text box');
       return { ...input, key: `${src.type}:${src.file.name}:${src.file.size}:${src.file.lastModified || ''}` };
     }
@@ -119,52 +121,110 @@ function slug(text) {
   return text.trim().replace(/[^\p{L}\p{N}]+/gu, '-').replace(/^-|-$/g, '').slice(0, 40) || 'text';
 }
 
+// A new input makes the shown result stale: a run of the old input still going is stopped
+// (its mesh must not replace the new preview), and the stats, histogram and downloads go.
+function inputChanged() {
+  inputSeq++;
+  stopRun();
+  clearResult();
+}
+
 async function preview() {
+  inputChanged();
+  const seq = inputSeq;
   try {
     const input = await buildInput(current);
+    if (seq !== inputSeq) return;  // a newer input or a run took over meanwhile
     view.setPreview(input.pslg ? { pslg: input.pslg } : { rings: input.rings, fill: input.fill });
     if (current.type !== 'draw') draw.hide();
     view.fit();
     const n = input.pslg ? input.pslg.points.length / 2 : input.rings.reduce((s, r) => s + r.length, 0);
-    showSource(`${input.note || input.label}: ${n} input vertices. Press Mesh.`);
+    showSource(`${input.note || input.label}: ${n} input vertices. Press Mesh.${linkNote()}${input.warning ? ` ${input.warning}` : ''}`);
     const am = await enginePromise.catch(() => null);
-    if (am) {
+    if (am && seq === inputSeq) {
       floorInfo = measureFloor(am, input.pslg || am.fromRings(input.rings, { fill: input.fill }));
       showFloor();
     }
     setStatus('');
   } catch (e) {
-    setStatus(e.message, 'error');
+    if (seq === inputSeq) inputFailed(e);
   }
 }
 
-// Files are read whole and parsed on the page before meshing; past this size a file is refused
-// with a message instead of freezing the tab (the CLI and the npm package take any size).
+// The current input cannot be meshed: nothing of the previous one stays on screen to be
+// taken for it, and Mesh says the same again.
+function inputFailed(e) {
+  view.clear();
+  draw.hide();
+  floorInfo = null;
+  showFloor();
+  const name = current.file ? current.file.name : current.type === 'text' ? `"${ui.text.value}"` : current.type;
+  showSource(`${name}: cannot be meshed (the message below says why).${linkNote()}`);
+  setStatus(e.message, 'error');
+}
+
+// A link to the page holds text, a sample or a drawing, not a file's contents.
+function linkNote() {
+  return current.type === 'file' ? ' A link to this page cannot carry the file: it opens the default text.' : '';
+}
+
+function stopRun() {
+  if (!running) return;
+  const c = running;
+  running = null;
+  c.abort();
+  ui.cancel.disabled = true;
+  ui.progress.hidden = true;
+}
+
+function clearResult() {
+  lastResult = null;
+  ui.stats.replaceChildren();
+  ui.stats.dataset.result = '';
+  drawHistogram(ui.histogram, null);
+  for (const b of ui.downloads.querySelectorAll('[data-format]')) b.disabled = true;
+}
+
+// Past this size a file is refused with a message instead of freezing the tab (the CLI and the
+// npm package take any size).
 export const MAX_FILE_MB = 32;
 
-async function takeFile(file, type = 'file') {
+// Files are read whole and parsed on the page; past MAX_FILE_MB a file is refused unread.
+async function readFile(file) {
   if (file.size > MAX_FILE_MB * 1024 * 1024) {
-    setStatus(`${file.name} is ${(file.size / 1048576).toFixed(1)} MB: files over ${MAX_FILE_MB} MB ` +
-              'are refused here (the acutemesh CLI and npm package take any size)', 'error');
+    throw new Error(`${file.name} is ${(file.size / 1048576).toFixed(1)} MB: files over ${MAX_FILE_MB} MB ` +
+                    'are refused here (the acutemesh CLI and npm package take any size)');
+  }
+  const am = await enginePromise.catch(() => null);
+  return loadFile(file, { am, tolerance: tolerance() });
+}
+
+async function takeFile(file, type = 'file') {
+  if (draw.active) toggleDraw();
+  let input;
+  try {
+    input = await readFile(file);
+  } catch (e) {
+    // The unreadable file is now the current input: Mesh must not go back to the last one.
+    current = { type, file, name: type === 'sample' ? ui.sample.value : undefined };
+    if (type === 'file') ui.sample.value = '';
+    inputChanged();
+    saveUrl();
+    inputFailed(e);
     return;
   }
-  try {
-    const am = await enginePromise.catch(() => null);
-    const input = await loadFile(file, { am, tolerance: tolerance() });
-    if (input.kind === 'font') {
-      const font = addFont(input.buffer, input.label);
-      current = { type: 'text' };
-      showSource(`font ${fontName(font, input.label)} loaded`);
-    } else {
-      current = { type, file, name: type === 'sample' ? ui.sample.value : undefined };
-      if (type === 'file') ui.sample.value = '';
-    }
-    if (draw.active) toggleDraw();
+  if (input.kind === 'font') {
+    const font = addFont(input.buffer, input.label);
+    current = { type: 'text' };
     saveUrl();
     await preview();
-  } catch (e) {
-    setStatus(e.message, 'error');
+    showSource(`font ${fontName(font, input.label)} loaded. ${ui.source.textContent}`);
+    return;
   }
+  current = { type, file, name: type === 'sample' ? ui.sample.value : undefined };
+  if (type === 'file') ui.sample.value = '';
+  saveUrl();
+  await preview();
 }
 
 async function takeSample(name) {
@@ -258,6 +318,7 @@ function takeVocabulary(am) {
 // ---- running --------------------------------------------------------------------------------
 async function run() {
   if (running) running.abort();
+  inputSeq++;
   const controller = new AbortController();
   running = controller;
   ui.cancel.disabled = false;
@@ -338,6 +399,7 @@ function show(am, pslg, input, options, m, wallMs) {
     smallestDomainAngle: floorInfo.corner,
     inputVertices: nInput,
     wallMilliseconds: round(wallMs, 1),
+    status: m.status ?? null,
     options,  // as the page asked for them
   };
   renderStats(result);
@@ -345,16 +407,8 @@ function show(am, pslg, input, options, m, wallMs) {
   ui.stats.dataset.runs = String(++runs);
   takeVocabulary(am);
   for (const b of ui.downloads.querySelectorAll('[data-format]')) b.disabled = false;
-  const warnings = s.warnings && s.warnings.length ? `\n${s.warnings.slice(0, 3).join('\n')}` : '';
-  const verdict = options.mode === 'acute' || options.mode === 'nonobtuse'
-    ? (result.certified ? 'certified ' + (options.mode === 'acute' ? 'acute' : 'non-obtuse') : 'NOT certified: the budget ran out (the best mesh so far is shown)')
-    : options.mode === 'quality'
-      ? (result.targetMet ? 'quality target met' : `quality target not met${m.message ? ` (${m.message})` : ''}`)
-      : 'constrained Delaunay';
-  const sentence = boundSentence(result);
-  setStatus(`Done in ${Math.round(wallMs)} ms: ${verdict}.${sentence ? ` ${sentence}` : ''}${warnings}`,
-    ((options.mode === 'acute' || options.mode === 'nonobtuse') && !result.certified) ||
-    (options.mode === 'acute' && !result.targetMet) ? 'warn' : '');
+  const said = verdict(result, m, s.warnings || []);
+  setStatus(said.text, said.kind);
   // The first mesh on screen: when the frame that draws it has run.
   if (runs === 1) {
     requestAnimationFrame(() => {
@@ -389,7 +443,7 @@ function renderStats(r) {
       ? `< ${r.angleBound}°` : `${truncate(r.maxAngle, 4)}°`],
     // Certification is of acuteness / non-obtuseness: it does not apply to the other modes.
     ['Certified', r.mode === 'acute' || r.mode === 'nonobtuse' ? (r.certified ? 'yes' : 'no') : 'n/a'],
-    ['Time', `${r.milliseconds} ms`],
+    ['Time', formatMs(r.milliseconds)],
   ];
   if (r.mode === 'acute') {
     const target = r.askedMaxAngle === AUTO ? 'auto' : `${r.askedMaxAngle}°`;
@@ -497,6 +551,7 @@ function toggleDraw() {
     ui.draw.setAttribute('aria-pressed', 'false');
   } else {
     if (current.type !== 'draw') draw.setRings([]);
+    inputChanged();
     view.clear();
     draw.start();
     ui.draw.setAttribute('aria-pressed', 'true');

@@ -53,6 +53,7 @@ export class MeshView {
     this.preview = null;
     this.bounds = boundsOf(p, t);
     this.cacheXform = null;
+    this.canvas.dataset.content = 'mesh';
     this.requestRender();
   }
 
@@ -74,12 +75,14 @@ export class MeshView {
     this.preview = { path, fill: fill === 'nonzero' ? 'nonzero' : 'evenodd', segments, points };
     this.mesh = null;
     this.bounds = boundsOf(points);
+    this.canvas.dataset.content = 'preview';
     this.requestRender();
   }
 
   clear() {
     this.mesh = null;
     this.preview = null;
+    this.canvas.dataset.content = '';
     this.requestRender();
   }
 
