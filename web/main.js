@@ -10,6 +10,7 @@ import { analyse, CLASSES } from './angles.js';
 import { drawHistogram } from './histogram.js';
 import { AUTO, angleFloor, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
 import { verdict, formatMs } from './verdict.js';
+import { RANGES, checkFields, problem } from './form.js';
 import { DrawTool, encodeRings, decodeRings } from './draw.js';
 import { parseFont, textToRings, fontName } from './loaders/font.js';
 import { loadFile } from './loaders/index.js';
@@ -22,8 +23,10 @@ const ui = {
   maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
   status: $('status'), stats: $('stats'), histogram: $('histogram'), legend: $('legend'),
   view: $('view'), fit: $('fit'), showEdges: $('show-edges'), showSteiner: $('show-steiner'),
-  dropHint: $('drop-hint'), downloads: $('downloads'),
+  dropHint: $('drop-hint'), downloads: $('downloads'), formError: $('form-error'), linkNote: $('link-note'),
 };
+// The number fields checked against their ranges (form.js) before a run.
+const FIELDS = { maxAngle: ui.maxAngle, minAngle: ui.minAngle, maxArea: ui.maxArea, maxSteiner: ui.maxSteiner, tolerance: ui.tolerance };
 
 const BUNDLED_FONTS = {
   'pagella-regular': 'fonts/texgyrepagella-regular.otf',
@@ -262,6 +265,7 @@ function syncOptionInputs() {
   ui.maxAngleAuto.disabled = m !== 'acute';
   showFloor();
   for (const el of [ui.minAngle, ui.maxArea, ui.maxSteiner]) el.disabled = m === 'cdt';
+  checkFields(FIELDS, ui.formError);
   // An empty input means the mesher's default, which the placeholder shows.
   if (!vocabulary) return;
   const d = vocabulary.defaults;
@@ -317,6 +321,12 @@ function takeVocabulary(am) {
 
 // ---- running --------------------------------------------------------------------------------
 async function run() {
+  const problems = checkFields(FIELDS, ui.formError);
+  if (problems.length) {
+    setStatus(`Not meshed: ${problems.join(' ')}`, 'error');
+    Object.values(FIELDS).find((el) => el.getAttribute('aria-invalid') === 'true')?.focus();
+    return;
+  }
   if (running) running.abort();
   inputSeq++;
   const controller = new AbortController();
@@ -507,9 +517,9 @@ function saveUrl() {
   const p = new URLSearchParams();
   for (const [k, d] of Object.entries(OPTION_DEFAULTS)) {
     const v = k === 'maxAngle' && ui.maxAngleAuto.checked ? AUTO : ui[k].value;
-    if (v !== d && v !== '') p.set(k, v);
+    if (v !== d && v !== '' && !(RANGES[k] && v !== AUTO && problem(k, v))) p.set(k, v);
   }
-  if (ui.tolerance.value !== TEXT_DEFAULTS.tol) p.set('tol', ui.tolerance.value);
+  if (ui.tolerance.value !== TEXT_DEFAULTS.tol && !problem('tolerance', ui.tolerance.value)) p.set('tol', ui.tolerance.value);
   if (current.type === 'text') {
     if (ui.text.value !== TEXT_DEFAULTS.text) p.set('text', ui.text.value);
     if (ui.font.value !== TEXT_DEFAULTS.font && BUNDLED_FONTS[ui.font.value]) p.set('font', ui.font.value);
@@ -522,16 +532,33 @@ function saveUrl() {
   history.replaceState(null, '', q ? `?${q}` : location.pathname);
 }
 
+// A value in the link that the page does not take falls back to the default, and says so.
 function loadUrl() {
   const p = new URLSearchParams(location.search);
-  for (const k of Object.keys(OPTION_DEFAULTS)) if (p.has(k)) ui[k].value = p.get(k);
-  // maxAngle=auto ticks the box (left as is when this mesher turns out not to take 'auto').
-  if (p.get('maxAngle') === AUTO) {
-    ui.maxAngleAuto.checked = true;
-    ui.maxAngle.value = OPTION_DEFAULTS.maxAngle;
+  const notes = [];
+  const fallBack = (k, v, why, used) => notes.push(`The link's ${k}=${v} ${why}: ${used} is used instead.`);
+  for (const [k, d] of Object.entries(OPTION_DEFAULTS)) {
+    if (!p.has(k)) continue;
+    const v = p.get(k);
+    if (k === 'maxAngle' && v === AUTO) {
+      // maxAngle=auto ticks the box.
+      ui.maxAngleAuto.checked = true;
+      ui.maxAngle.value = d;
+    } else if (k === 'mode' && ![...ui.mode.options].some((o) => o.value === v)) {
+      fallBack(k, v, 'is not a mode here', ui.mode.options[0].textContent);
+    } else if (RANGES[k] && problem(k, v)) {
+      fallBack(k, v, `is out of range (${RANGES[k].label.toLowerCase()}: ${RANGES[k].words})`, `${d}${RANGES[k].unit}`);
+    } else {
+      ui[k].value = v;
+    }
   }
-  if (![...ui.mode.options].some((o) => o.value === ui.mode.value)) ui.mode.value = 'acute';
-  if (p.has('tol')) ui.tolerance.value = p.get('tol');
+  if (p.has('tol')) {
+    const v = p.get('tol');
+    if (problem('tolerance', v)) fallBack('tol', v, `is out of range (tolerance: ${RANGES.tolerance.words})`, `${TEXT_DEFAULTS.tol}‰`);
+    else ui.tolerance.value = v;
+  }
+  ui.linkNote.textContent = notes.join(' ');
+  ui.linkNote.hidden = !notes.length;
   if (p.has('text')) ui.text.value = p.get('text');
   if (p.has('font') && BUNDLED_FONTS[p.get('font')]) ui.font.value = p.get('font');
   if (p.has('sample') && [...ui.sample.options].some((o) => o.value === p.get('sample'))) {
@@ -563,7 +590,7 @@ function toggleDraw() {
 
 // ---- wiring -------------------------------------------------------------------------------
 function wire() {
-  ui.run.addEventListener('click', () => { if (draw.active) toggleDraw(); run(); });
+  ui.run.addEventListener('click', () => { ui.linkNote.hidden = true; if (draw.active) toggleDraw(); run(); });
   ui.cancel.addEventListener('click', () => { if (running) running.abort(); });
   const textChanged = () => { current = { type: 'text' }; ui.sample.value = ''; saveUrl(); preview(); };
   ui.text.addEventListener('input', textChanged);
@@ -578,6 +605,8 @@ function wire() {
   for (const el of [ui.mode, ui.maxAngle, ui.maxAngleAuto, ui.minAngle, ui.maxArea, ui.maxSteiner]) {
     el.addEventListener('change', () => { syncOptionInputs(); saveUrl(); });
   }
+  // Out-of-range values are said while they are typed, not only when Mesh is pressed.
+  for (const el of Object.values(FIELDS)) el.addEventListener('input', () => checkFields(FIELDS, ui.formError));
   ui.draw.addEventListener('click', toggleDraw);
   ui.drawClose.addEventListener('click', () => draw.closeRing());
   ui.drawClear.addEventListener('click', () => draw.clear());
