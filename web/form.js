@@ -3,9 +3,9 @@
 
 export const RANGES = {
   maxAngle: { label: 'Max angle', unit: '°', ok: (v) => v > 60 && v <= 90,
-    words: 'above 60° and at most 90° (a triangle always has an angle of 60° or more)' },
+    words: 'above 60° and at most 90°', why: 'a triangle always has an angle of 60° or more' },
   minAngle: { label: 'Min angle', unit: '°', ok: (v) => v >= 0 && v < 60,
-    words: 'from 0° to below 60° (0: none; above 40° it is seldom reached)' },
+    words: 'from 0° to below 60°', why: '0: none; above 40° it is seldom reached' },
   maxArea: { label: 'Max area', unit: '', ok: (v) => v >= 0, words: '0 (no bound) or more' },
   maxSteiner: { label: 'Steiner budget', unit: '', ok: (v) => v >= 0 && Number.isInteger(v),
     words: 'a whole number, 0 (automatic) or more' },
@@ -15,10 +15,11 @@ export const RANGES = {
 // The message for one value (a string as typed or linked), or '' when it is fine.
 export function problem(key, text, badInput = false) {
   const r = RANGES[key];
-  if (badInput) return `${r.label}: not a number; it must be ${r.words}.`;
+  const why = r.why ? ` (${r.why})` : '';
+  if (badInput) return `${r.label}: not a number; it must be ${r.words}${why}.`;
   if (text === '' || text == null) return '';
   const v = Number(text);
-  if (!Number.isFinite(v) || !r.ok(v)) return `${r.label} ${text}${Number.isFinite(v) ? r.unit : ''} is out of range: it must be ${r.words}.`;
+  if (!Number.isFinite(v) || !r.ok(v)) return `${r.label} ${text}${Number.isFinite(v) ? r.unit : ''} is out of range: it must be ${r.words}${why}.`;
   return '';
 }
 

@@ -44,6 +44,7 @@ const draw = new DrawTool(view, (rings) => {
   showSource(`drawing: ${rings.length} ring${rings.length === 1 ? '' : 's'}`);
   saveUrl();
 });
+draw.onVertex = (n) => showSource(`drawing: ${n} ${n === 1 ? 'vertex' : 'vertices'} in the open ring; click the first one (or press Enter) to close it`);
 
 const fonts = new Map();      // key -> Promise<opentype Font>
 let current = { type: 'text' };  // the input the Mesh button meshes
@@ -583,7 +584,8 @@ function toggleDraw() {
     draw.start();
     ui.draw.setAttribute('aria-pressed', 'true');
     current = { type: 'draw', rings: draw.rings };
-    showSource('drawing: click to place vertices, click the first one to close the ring');
+    showSource('drawing: click to place vertices, click the first one to close the ring ' +
+               '(keyboard: arrows move the cross-hair, Space places a vertex, Enter closes the ring)');
   }
   ui.drawClose.disabled = ui.drawClear.disabled = !draw.active;
 }

@@ -28,6 +28,7 @@ export class MeshView {
     this.showSteiner = true;
     this.overlay = null;    // (ctx, view) => void, drawn last in CSS pixels (drawing tool)
     this.onClick = null;    // (x, y, event) => void in world coordinates
+    this.onKey = null;      // (keydown event) => true when it took the key (drawing tool)
     this.lastFullMs = 0;
     this.frameCount = 0;
     this.cache = document.createElement('canvas');
@@ -308,6 +309,7 @@ export class MeshView {
     cv.addEventListener('pointercancel', end);
     cv.addEventListener('dblclick', (e) => { if (!this.onClick) this.fit(); e.preventDefault(); });
     cv.addEventListener('keydown', (e) => {
+      if (this.onKey && this.onKey(e)) { e.preventDefault(); return; }  // the drawing tool's keys
       const step = 40;
       const keys = {
         ArrowLeft: () => this.panBy(step, 0), ArrowRight: () => this.panBy(-step, 0),
