@@ -12,6 +12,9 @@ import { CLASSES } from './angles.js';
 const SEGMENT_COLOR = '#111';
 const STEINER_COLOR = '#c2185b';
 const BG = '#ffffff';
+const STEINER_SHARE = 0.15; // a Steiner dot's radius: this share of its shortest edge...
+const STEINER_MAX_PX = 3;   // ...up to this many CSS pixels
+const DOT_MIN_PX = 0.6;     // smaller dots are not drawn
 const SLOW_FRAME_MS = 24;   // above this, gestures use the bitmap path
 const SETTLE_MS = 140;      // pause after which a gesture counts as over
 
@@ -50,7 +53,7 @@ export class MeshView {
     let sum = 0, count = 0;
     for (const tile of tiles) { sum += tile.edgeSum; count += tile.edgeCount; }
     this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge: count ? sum / count : 0,
-      segments: segmentPath(p, m.segments) };
+      segments: segmentPath(p, m.segments), shortest: shortestEdges(p, t) };
     this.preview = null;
     this.bounds = boundsOf(p, t);
     this.cacheXform = null;
@@ -172,7 +175,7 @@ export class MeshView {
       ctx.strokeStyle = SEGMENT_COLOR;
       ctx.lineWidth = 1.6 * px;
       ctx.stroke(m.segments);
-      if (this.showSteiner && edgePx > 3) this.#drawSteiner();
+      if (this.showSteiner) this.#drawSteiner();
     } else if (this.preview) {
       const p = this.preview;
       if (p.path) {
@@ -192,24 +195,36 @@ export class MeshView {
   }
 
   // Steiner points are the vertices past the input's: the mesher keeps input vertex i at i.
+  // Each dot is sized by its shortest edge on screen, so it never covers its triangles (dense
+  // parts show none until zoomed in) and grows with the zoom up to STEINER_MAX_PX.
   #drawSteiner() {
-    this.#drawDots(this.mesh.points, this.mesh.nInput, STEINER_COLOR, 1.8);
+    const { points, nInput, shortest } = this.mesh;
+    const s = this.s;
+    const drawn = this.#drawDots(points, nInput, STEINER_COLOR,
+      (v) => (Number.isFinite(shortest[v]) ? Math.min(STEINER_MAX_PX, STEINER_SHARE * shortest[v] * s) : 0));
+    this.canvas.dataset.steiner = drawn.join(',');
   }
 
+  // Dots of radius r(vertex) in CSS pixels (none below DOT_MIN_PX); returns [count, smallest
+  // radius, largest radius] of those drawn.
   #drawDots(points, first, color, r) {
     const { ctx, dpr, s, tx, ty, w, h } = this;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     const path = new Path2D();
-    let n = 0;
+    let n = 0, rMin = Infinity, rMax = 0;
     for (let i = 2 * first; i + 1 < points.length; i += 2) {
       const x = points[i] * s + tx, y = -points[i + 1] * s + ty;
-      if (x < -r || y < -r || x > w + r || y > h + r) continue;
-      path.moveTo(x + r, y);
-      path.arc(x, y, r, 0, 2 * Math.PI);
+      const radius = typeof r === 'number' ? r : r(i / 2);
+      if (!(radius >= DOT_MIN_PX) || x < -radius || y < -radius || x > w + radius || y > h + radius) continue;
+      path.moveTo(x + radius, y);
+      path.arc(x, y, radius, 0, 2 * Math.PI);
+      rMin = Math.min(rMin, radius);
+      rMax = Math.max(rMax, radius);
       if (++n > 200000) break;
     }
     ctx.fillStyle = color;
     ctx.fill(path);
+    return n ? [n, +rMin.toFixed(3), +rMax.toFixed(3)] : [0, 0, 0];
   }
 
   #storeCache() {
@@ -425,6 +440,20 @@ function buildTiles(p, t, cls) {
     }
   }
   return tiles.filter((tile) => tile.x1 >= tile.x0);
+}
+
+// Per vertex, the length of its shortest edge in the mesh (Infinity for an unused vertex).
+function shortestEdges(p, t) {
+  const out = new Float64Array(p.length / 2).fill(Infinity);
+  for (let i = 0; i < t.length; i += 3) {
+    for (let k = 0; k < 3; k++) {
+      const a = t[i + k], b = t[i + (k + 1) % 3];
+      const d = Math.hypot(p[2 * a] - p[2 * b], p[2 * a + 1] - p[2 * b + 1]);
+      if (d < out[a]) out[a] = d;
+      if (d < out[b]) out[b] = d;
+    }
+  }
+  return out;
 }
 
 function segmentPath(p, seg) {
