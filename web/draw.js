@@ -14,6 +14,7 @@ export class DrawTool {
     this.view = view;
     this.onChange = onChange;  // (rings) => void, after every closed ring / clear
     this.onVertex = null;      // (count) => void, after a vertex is placed or removed
+    this.onDropped = null;     // (why) => void, when a closed ring is dropped
     this.active = false;
     this.rings = [];
     this.open = [];
@@ -55,6 +56,9 @@ export class DrawTool {
     if (this.open.length >= 3) {
       const [ring] = cleanRings([this.open]);
       if (ring) this.rings.push(ring);
+      // A ring without area (one that crosses itself so that its two halves cancel, like a
+      // symmetric bow-tie, or one on a line) bounds nothing: it is dropped, and said so.
+      else this.onDropped?.('it encloses no area (it crosses itself so that its halves cancel, or lies on a line); draw rings that do not cross themselves');
     }
     this.open = [];
     this.view.requestRender();

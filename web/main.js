@@ -7,12 +7,13 @@
 import { loadEngine, meshInWorker, warmUp } from './engine.js';
 import { MeshView } from './view.js';
 import { analyse, CLASSES } from './angles.js';
-import { drawHistogram } from './histogram.js';
+import { drawHistogram, SMALL_ANGLE_COLOR } from './histogram.js';
 import { AUTO, angleFloor, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
 import { verdict, formatMs } from './verdict.js';
+import { meshToSvg } from './svg-export.js';
 import { RANGES, checkFields, problem } from './form.js';
 import { DrawTool, encodeRings, decodeRings } from './draw.js';
-import { parseFont, textToRings, fontName } from './loaders/font.js';
+import { parseFont, textToRings, fontName, missingGlyphs } from './loaders/font.js';
 import { loadFile } from './loaders/index.js';
 
 const $ = (id) => document.getElementById(id);
@@ -42,8 +43,12 @@ const draw = new DrawTool(view, (rings) => {
   current = { type: 'draw', rings };
   inputChanged();
   showSource(`drawing: ${rings.length} ring${rings.length === 1 ? '' : 's'}`);
+  setStatus(droppedRing, droppedRing ? 'warn' : '');
+  droppedRing = '';
   saveUrl();
 });
+let droppedRing = '';  // why the last closed ring was dropped, said until the next ring
+draw.onDropped = (why) => { droppedRing = `The ring just closed was dropped: ${why}.`; };
 draw.onVertex = (n) => showSource(`drawing: ${n} ${n === 1 ? 'vertex' : 'vertices'} in the open ring; click the first one (or press Enter) to close it`);
 
 const fonts = new Map();      // key -> Promise<opentype Font>
@@ -104,9 +109,12 @@ async function buildInput(src) {
       if (!text.trim()) throw new Error('type some text to mesh');
       const font = await getFont(ui.font.value);
       const rings = textToRings(font, text, tolerance());
-      if (!rings.length) throw new Error(`"${text}" has no outlines in this font`);
+      const fontLabel = ui.font.selectedOptions[0].text;
+      const missing = missingGlyphs(font, text);
+      const noGlyph = missing.length ? `${fontLabel} has no glyph for ${missing.map((c) => `"${c}"`).join(', ')}` : '';
+      if (!rings.length) throw new Error(noGlyph ? `${noGlyph}: nothing to mesh` : `"${text}" has no outlines in this font`);
       return { rings, fill: 'nonzero', label: slug(text), key: `text:${ui.font.value}:${text}`,
-        note: `"${text}" in ${ui.font.selectedOptions[0].text}` };
+        note: `"${text}" in ${fontLabel}`, warning: noGlyph ? `${noGlyph}: left out.` : '' };
     }
     case 'file': case 'sample': {
       const input = await readFile(src.file);
@@ -142,8 +150,7 @@ async function preview() {
     view.setPreview(input.pslg ? { pslg: input.pslg } : { rings: input.rings, fill: input.fill });
     if (current.type !== 'draw') draw.hide();
     view.fit();
-    const n = input.pslg ? input.pslg.points.length / 2 : input.rings.reduce((s, r) => s + r.length, 0);
-    showSource(`${input.note || input.label}: ${n} input vertices. Press Mesh.${linkNote()}${input.warning ? ` ${input.warning}` : ''}`);
+    showSource(describeInput(input, ' Press Mesh.'));
     const am = await enginePromise.catch(() => null);
     if (am && seq === inputSeq) {
       floorInfo = measureFloor(am, input.pslg || am.fromRings(input.rings, { fill: input.fill }));
@@ -153,6 +160,12 @@ async function preview() {
   } catch (e) {
     if (seq === inputSeq) inputFailed(e);
   }
+}
+
+// The source line: what the input is, its size, and what the page could not take from it.
+function describeInput(input, next = '') {
+  const n = input.pslg ? input.pslg.points.length / 2 : input.rings.reduce((s, r) => s + r.length, 0);
+  return `${input.note || input.label}: ${n} input vertices.${next}${linkNote()}${input.warning ? ` ${input.warning}` : ''}`;
 }
 
 // The current input cannot be meshed: nothing of the previous one stays on screen to be
@@ -312,7 +325,7 @@ function takeVocabulary(am) {
     b.dataset.testid = `download-${f.name}`;
     b.dataset.format = f.name;
     b.textContent = f.extension;
-    b.title = f.description;
+    b.title = f.name === 'svg' ? 'SVG: the mesh as the view draws it, triangles coloured by their largest angle' : f.description;
     b.disabled = lastResult === null;
     b.addEventListener('click', () => download(f.name));
     ui.downloads.insertBefore(b, png);
@@ -381,6 +394,7 @@ function show(am, pslg, input, options, m, wallMs) {
   floorInfo = { corner, floor: Number.isFinite(s.angleFloor) && s.smallestDomainAngle < 360 ? s.angleFloor : angleFloor(corner), from: 'run' };
   showFloor();
   view.setMesh(m, a.cls, nInput);
+  showSource(describeInput(input));
   draw.hide();
   if (input.key !== lastMeshedKey) view.fit();
   lastMeshedKey = input.key;
@@ -392,7 +406,7 @@ function show(am, pslg, input, options, m, wallMs) {
     floor: options.mode === 'acute' ? floorInfo.floor : null,
     max: finite(s.maxAngle),
   };
-  lastResult = { am, mesh: m, label: input.label, angles: a.angles, marks };
+  lastResult = { am, mesh: m, label: input.label, angles: a.angles, marks, cls: a.cls, nInput };
   drawHistogram(ui.histogram, a.angles, marks);
   const result = {
     triangles: m.triangles.length / 3,
@@ -486,7 +500,14 @@ function buildLegend() {
   const st = document.createElement('span');
   st.className = 'mark-steiner';
   st.append(document.createElement('i'), 'Steiner point');
-  ui.legend.replaceChildren(...items, seg, st);
+  // The histogram's grey bars: angles below 60 degrees, never a triangle's largest, so they
+  // have no triangle colour.
+  const small = document.createElement('span');
+  small.className = 'mark-small';
+  const swatch = document.createElement('i');
+  swatch.style.background = SMALL_ANGLE_COLOR;
+  small.append(swatch, 'histogram: angles < 60° (never a largest)');
+  ui.legend.replaceChildren(...items, seg, st, small);
   ui.legend.title = 'Triangles are coloured by their largest angle';
 }
 
@@ -510,7 +531,9 @@ function download(format) {
     return;
   }
   const f = am.vocabulary.outputFormats.find((e) => e.name === format);
-  saveBlob(new Blob([am.write(mesh, format)], { type: f.mediaType }), `${label}${f.extension}`);
+  // SVG: the picture as the view colours it, not the mesher's one-colour drawing.
+  const text = format === 'svg' ? meshToSvg(mesh, lastResult.cls, lastResult.nInput) : am.write(mesh, format);
+  saveBlob(new Blob([text], { type: f.mediaType }), `${label}${f.extension}`);
 }
 
 // ---- URL state ------------------------------------------------------------------------------

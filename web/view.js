@@ -34,6 +34,8 @@ export class MeshView {
     this.onKey = null;      // (keydown event) => true when it took the key (drawing tool)
     this.lastFullMs = 0;
     this.frameCount = 0;
+    this.probe = Object.assign(document.createElement('canvas'), { width: 1, height: 1 })
+      .getContext('2d', { willReadFrequently: true });
     this.cache = document.createElement('canvas');
     this.cacheXform = null;
     this.interacting = false;
@@ -55,7 +57,8 @@ export class MeshView {
     this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge: count ? sum / count : 0,
       segments: segmentPath(p, m.segments), shortest: shortestEdges(p, t) };
     this.preview = null;
-    this.bounds = boundsOf(p, t);
+    this.bounds = mainBounds(meshParts(p, t));
+    this.canvas.dataset.extent = Object.values(boundsOf(p, t)).join(',');
     this.cacheXform = null;
     this.canvas.dataset.content = 'mesh';
     this.requestRender();
@@ -78,7 +81,7 @@ export class MeshView {
     }
     this.preview = { path, fill: fill === 'nonzero' ? 'nonzero' : 'evenodd', segments, points };
     this.mesh = null;
-    this.bounds = boundsOf(points);
+    this.bounds = rings ? mainBounds(rings.map(ringPart)) : boundsOf(points);
     this.canvas.dataset.content = 'preview';
     this.requestRender();
   }
@@ -102,6 +105,7 @@ export class MeshView {
     if (!Number.isFinite(this.s) || this.s <= 0) this.s = 1;
     this.tx = this.w / 2 - ((bounds.x0 + bounds.x1) / 2) * this.s;
     this.ty = this.h / 2 + ((bounds.y0 + bounds.y1) / 2) * this.s;
+    this.canvas.dataset.fit = [bounds.x0, bounds.y0, bounds.x1, bounds.y1].join(',');
     this.requestRender();
   }
 
@@ -130,9 +134,12 @@ export class MeshView {
     if (fast) this.#renderCached();
     else {
       this.#renderFull();
-      // Canvas drawing is recorded and rasterised later, off this measurement; reading one
-      // pixel forces the raster now, so the time below is what the frame really costs.
-      this.ctx.getImageData(0, 0, 1, 1);
+      // Canvas drawing is recorded and rasterised later, off this measurement; copying one
+      // pixel forces the raster now, so the time below is what the frame really costs. The
+      // copy goes to a 1-pixel canvas made for reading: reading the view itself every frame
+      // would make the browser warn (and move the view to a slower, readable canvas).
+      this.probe.drawImage(this.canvas, 0, 0, 1, 1, 0, 0, 1, 1);
+      this.probe.getImageData(0, 0, 1, 1);
       this.lastFullMs = performance.now() - t0;
       this.canvas.dataset.renderMs = this.lastFullMs.toFixed(1);
       if (this.lastFullMs > SLOW_FRAME_MS) this.#storeCache();
@@ -386,6 +393,66 @@ function boundsOf(points, triangles) {
   if (triangles) for (let i = 0; i < triangles.length; i++) visit(triangles[i]);
   else for (let i = 0; 2 * i + 1 < points.length; i++) visit(i);
   return { x0, y0, x1, y1 };
+}
+
+// What "fit" frames: the largest parts of the picture that together hold 99% of its area, and
+// the parts near them, so a far islet (South Africa's Prince Edward Islands) does not shrink
+// the country to a corner; zooming out still shows it. parts: [{ area, x0, y0, x1, y1 }].
+const FIT_AREA_SHARE = 0.99;
+const FIT_NEAR = 0.15;  // parts whose centre is within this share of the frame's size count
+
+function mainBounds(parts) {
+  const total = parts.reduce((sum, q) => sum + q.area, 0);
+  if (!(total > 0)) return parts.reduce(union, { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity });
+  const sorted = [...parts].sort((a, b) => b.area - a.area);
+  let b = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity }, sum = 0, k = 0;
+  while (k < sorted.length && sum < FIT_AREA_SHARE * total) { b = union(b, sorted[k]); sum += sorted[k++].area; }
+  const mx = FIT_NEAR * (b.x1 - b.x0), my = FIT_NEAR * (b.y1 - b.y0);
+  const near = { x0: b.x0 - mx, y0: b.y0 - my, x1: b.x1 + mx, y1: b.y1 + my };
+  for (const q of sorted.slice(k)) {
+    const cx = (q.x0 + q.x1) / 2, cy = (q.y0 + q.y1) / 2;
+    if (cx >= near.x0 && cx <= near.x1 && cy >= near.y0 && cy <= near.y1) b = union(b, q);
+  }
+  return b;
+}
+
+function union(a, b) {
+  return { x0: Math.min(a.x0, b.x0), y0: Math.min(a.y0, b.y0), x1: Math.max(a.x1, b.x1), y1: Math.max(a.y1, b.y1) };
+}
+
+function ringPart(ring) {
+  let area = 0;
+  const b = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity };
+  ring.forEach(([x, y], i) => {
+    const [u, v] = ring[(i + 1) % ring.length];
+    area += x * v - u * y;
+    b.x0 = Math.min(b.x0, x); b.x1 = Math.max(b.x1, x); b.y0 = Math.min(b.y0, y); b.y1 = Math.max(b.y1, y);
+  });
+  return { area: Math.abs(area) / 2, ...b };
+}
+
+// The mesh's connected parts (triangles joined through shared vertices), with area and bounds.
+function meshParts(p, t) {
+  const parent = new Int32Array(p.length / 2).map((_, i) => i);
+  const root = (i) => { while (parent[i] !== i) i = parent[i] = parent[parent[i]]; return i; };
+  for (let i = 0; i < t.length; i += 3) {
+    const a = root(t[i]);
+    parent[root(t[i + 1])] = a;
+    parent[root(t[i + 2])] = a;
+  }
+  const parts = new Map();
+  for (let i = 0; i < t.length; i += 3) {
+    const r = root(t[i]);
+    let q = parts.get(r);
+    if (!q) parts.set(r, q = { area: 0, x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity });
+    const [a, b, c] = [2 * t[i], 2 * t[i + 1], 2 * t[i + 2]];
+    q.area += Math.abs((p[b] - p[a]) * (p[c + 1] - p[a + 1]) - (p[c] - p[a]) * (p[b + 1] - p[a + 1])) / 2;
+    for (const v of [a, b, c]) {
+      q.x0 = Math.min(q.x0, p[v]); q.x1 = Math.max(q.x1, p[v]);
+      q.y0 = Math.min(q.y0, p[v + 1]); q.y1 = Math.max(q.y1, p[v + 1]);
+    }
+  }
+  return [...parts.values()];
 }
 
 // A neutral grey between the triangle colours and the ink, opaque.
