@@ -44,7 +44,7 @@ async function runAndWait(page) {
 async function upload(page, path) {
   await page.setInputFiles('[data-testid=file-input]', path);
   // Choosing a file previews it; the source line names what was read.
-  await page.waitForFunction(() => /input vertices/.test(document.getElementById('source').textContent));
+  await page.waitForFunction(() => /Press Mesh\./.test(document.getElementById('source').textContent));
 }
 
 async function downloadText(page, testid) {

@@ -39,7 +39,7 @@ test('an empty mesh is an error that says why, in any mode', async () => {
   const path = tempFile('one-segment.poly', '5 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n5 3 4\n1 0\n1 1 5\n0\n');
   const { page, errors, context } = await open('?mode=cdt');
   await page.setInputFiles('[data-testid=file-input]', path);
-  await page.waitForFunction(() => /input vertices/.test(document.getElementById('source').textContent));
+  await page.waitForFunction(() => /Press Mesh\./.test(document.getElementById('source').textContent));
   const r = await runAndWait(page);
   assert.equal(r.triangles, 0);
   const s = await status(page);
@@ -145,7 +145,7 @@ test('a new sample clears the previous result\'s stats, histogram and downloads'
   assert.ok(await statsRows(page) > 0);
   assert.notEqual(await page.getAttribute('[data-testid=histogram]', 'data-bins'), '');
   await page.selectOption('#sample', 'iceland');
-  await page.waitForFunction(() => /input vertices/.test(document.getElementById('source').textContent));
+  await page.waitForFunction(() => /Press Mesh\./.test(document.getElementById('source').textContent));
   assert.equal(await shown(page), 'preview');
   assert.equal(await statsRows(page), 0);
   assert.equal(await page.getAttribute('[data-testid=histogram]', 'data-bins'), '');

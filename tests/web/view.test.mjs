@@ -76,7 +76,7 @@ test('fit frames the main part: South Africa, not the Prince Edward Islands 1,70
   await page.screenshot({ path: join(artifacts, 'fit-south-africa.png') });
   // Italy's islands (Sicily, Sardinia) are part of the picture.
   await page.selectOption('#sample', 'italy');
-  await page.waitForFunction(() => /input vertices/.test(document.getElementById('source').textContent));
+  await page.waitForFunction(() => /Press Mesh\./.test(document.getElementById('source').textContent));
   await runAndWait(page);
   const [ifit, iextent] = await page.$eval('[data-testid=mesh-canvas]', (c) => [c.dataset.fit, c.dataset.extent].map((s) => s.split(',').map(Number)));
   assert.ok(height(ifit) >= 0.95 * height(iextent), `Italy: fit ${ifit}, extent ${iextent}`);
@@ -93,7 +93,7 @@ test('a file is not in the link, a missing glyph and a dropped drawing are said'
   assert.equal(withGlyph.inputVertices, plain.inputVertices, 'the missing glyph\'s box was meshed');
   // A file: the link cannot carry it, and the page says so.
   await page.setInputFiles('[data-testid=file-input]', join(root, 'tests', 'data', 'A.poly'));
-  await page.waitForFunction(() => /input vertices/.test(document.getElementById('source').textContent));
+  await page.waitForFunction(() => /Press Mesh\./.test(document.getElementById('source').textContent));
   assert.match(await page.textContent('#source'), /A link to this page cannot carry the file: it opens the default text\./);
   // A symmetric bow-tie has no area: dropped, with the reason.
   await page.click('#draw');
