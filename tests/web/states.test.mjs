@@ -157,3 +157,14 @@ test('a new sample clears the previous result\'s stats, histogram and downloads'
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('a min and a max angle together: the status says both were met', async () => {
+  const { page, errors, context } = await open('?text=Hi&minAngle=35&maxAngle=80');
+  const r = await result(page);
+  assert.equal(r.status, 'ok');
+  const s = await status(page);
+  assert.equal(s.kind, '');
+  assert.match(s.text, /Certified acute\. Every angle below 80° \(this input's floor: 72°\)\. Every angle at least 35° \(smallest 35\.\d\d°\)\./);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
