@@ -2,19 +2,24 @@
 // on its first vertex (or Enter, or "Close ring") closes it. Rings drawn inside another become
 // holes under the even-odd rule, so "add a hole" is just "draw a ring inside". Backspace removes
 // the last vertex, Escape drops the open ring. Drag still pans and the wheel still zooms.
+// From the keyboard: the arrow keys move a cross-hair (Shift: finer), Space places a vertex
+// there, Enter closes the ring.
 import { cleanRings } from './geometry.js';
 
 const SNAP_PX = 9;
+const KEY_STEP_PX = 20;  // cross-hair step of an arrow key; Shift: 2
 
 export class DrawTool {
   constructor(view, onChange) {
     this.view = view;
     this.onChange = onChange;  // (rings) => void, after every closed ring / clear
+    this.onVertex = null;      // (count) => void, after a vertex is placed or removed
+    this.onDropped = null;     // (why) => void, when a closed ring is dropped
     this.active = false;
     this.rings = [];
     this.open = [];
     this.hover = null;
-    this.keyHandler = (e) => this.#key(e);
+    this.cursor = null;        // the keyboard's cross-hair, in world coordinates
   }
 
   start() {
@@ -25,7 +30,7 @@ export class DrawTool {
     v.onHover = (x, y) => { this.hover = [x, y]; if (this.open.length) v.requestRender(); };
     v.overlay = (ctx) => this.#drawOverlay(ctx);
     if (!this.rings.length && !v.mesh && !v.preview) v.fit({ x0: 0, y0: 0, x1: 1000, y1: 1000 });
-    v.canvas.addEventListener('keydown', this.keyHandler);
+    v.onKey = (e) => this.#key(e);
     v.canvas.focus();
     v.requestRender();
   }
@@ -36,8 +41,9 @@ export class DrawTool {
     v.canvas.classList.remove('drawing');
     v.onClick = v.onHover = null;
     v.overlay = this.rings.length ? (ctx) => this.#drawOverlay(ctx) : null;
-    v.canvas.removeEventListener('keydown', this.keyHandler);
+    v.onKey = null;
     this.open = [];
+    this.cursor = null;
     v.requestRender();
   }
 
@@ -50,6 +56,9 @@ export class DrawTool {
     if (this.open.length >= 3) {
       const [ring] = cleanRings([this.open]);
       if (ring) this.rings.push(ring);
+      // A ring without area (one that crosses itself so that its two halves cancel, like a
+      // symmetric bow-tie, or one on a line) bounds nothing: it is dropped, and said so.
+      else this.onDropped?.('it encloses no area (it crosses itself so that its halves cancel, or lies on a line); draw rings that do not cross themselves');
     }
     this.open = [];
     this.view.requestRender();
@@ -76,14 +85,28 @@ export class DrawTool {
     }
     this.open.push([x, y]);
     this.view.requestRender();
+    this.onVertex?.(this.open.length);
   }
 
+  // True when the key was the drawing's (the view then does not pan with it).
   #key(e) {
-    if (e.key === 'Enter') this.closeRing();
-    else if (e.key === 'Escape') { this.open = []; this.view.requestRender(); }
-    else if (e.key === 'Backspace') { this.open.pop(); this.view.requestRender(); }
-    else return;
-    e.preventDefault();
+    const v = this.view;
+    const moves = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
+    if (moves[e.key]) {
+      const step = e.shiftKey ? KEY_STEP_PX / 10 : KEY_STEP_PX;
+      const [sx, sy] = this.cursor ? v.toScreen(...this.cursor) : [v.w / 2, v.h / 2];
+      const [dx, dy] = moves[e.key];
+      const nx = Math.min(v.w, Math.max(0, sx + dx * step)), ny = Math.min(v.h, Math.max(0, sy + dy * step));
+      this.cursor = v.toWorld(nx, ny);
+      this.hover = this.cursor;
+      v.requestRender();
+    } else if (e.key === ' ') {
+      this.#click(...(this.cursor || v.toWorld(v.w / 2, v.h / 2)));
+    } else if (e.key === 'Enter') this.closeRing();
+    else if (e.key === 'Escape') { this.open = []; v.requestRender(); }
+    else if (e.key === 'Backspace') { this.open.pop(); v.requestRender(); this.onVertex?.(this.open.length); }
+    else return false;
+    return true;
   }
 
   #drawOverlay(ctx) {
@@ -99,6 +122,15 @@ export class DrawTool {
     ctx.lineWidth = 1.5;
     ctx.stroke(path);
     if (!this.active) return;
+    if (this.cursor) {
+      const [cx, cy] = v.toScreen(...this.cursor);
+      ctx.strokeStyle = '#1d2430';
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      ctx.moveTo(cx - 10, cy); ctx.lineTo(cx + 10, cy);
+      ctx.moveTo(cx, cy - 10); ctx.lineTo(cx, cy + 10);
+      ctx.stroke();
+    }
     if (this.open.length) {
       const o = new Path2D();
       this.open.forEach(([x, y], i) => (i ? o.lineTo : o.moveTo).call(o, ...v.toScreen(x, y)));

@@ -9,6 +9,8 @@ import { CLASSES } from './angles.js';
 const BIN = 2;
 const MISS = '#d7301f';
 const INK = '#5d6675';
+// Bars below 60 degrees: no triangle's largest angle is there, so no triangle colour applies.
+export const SMALL_ANGLE_COLOR = '#8a94a6';
 
 // Counts per bin, and per bin the angles at or above `bound` (none when no bound is given).
 export function binAngles(angles, bound = Infinity) {
@@ -70,7 +72,7 @@ export function drawHistogram(canvas, angles, marks = {}) {
     const x = padL + i * bw + 0.5, bwide = Math.max(1, bw - 1);
     // Colour each bar as a triangle with that largest angle would be coloured; its part at or
     // above the bound on top, in the bound's red.
-    ctx.fillStyle = i * BIN >= 60 ? colorFor(i * BIN + BIN / 2) : '#8a94a6';
+    ctx.fillStyle = i * BIN >= 60 ? colorFor(i * BIN + BIN / 2) : SMALL_ANGLE_COLOR;
     ctx.fillRect(x, padT + ph - bh, bwide, bh - oh);
     if (oh) {
       ctx.fillStyle = MISS;

@@ -7,10 +7,13 @@
 import { loadEngine, meshInWorker, warmUp } from './engine.js';
 import { MeshView } from './view.js';
 import { analyse, CLASSES } from './angles.js';
-import { drawHistogram } from './histogram.js';
-import { AUTO, angleFloor, boundSentence, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
+import { drawHistogram, SMALL_ANGLE_COLOR } from './histogram.js';
+import { AUTO, angleFloor, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
+import { verdict, formatMs } from './verdict.js';
+import { meshToSvg } from './svg-export.js';
+import { RANGES, checkFields, problem } from './form.js';
 import { DrawTool, encodeRings, decodeRings } from './draw.js';
-import { parseFont, textToRings, fontName } from './loaders/font.js';
+import { parseFont, textToRings, fontName, missingGlyphs } from './loaders/font.js';
 import { loadFile } from './loaders/index.js';
 
 const $ = (id) => document.getElementById(id);
@@ -21,8 +24,10 @@ const ui = {
   maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
   status: $('status'), stats: $('stats'), histogram: $('histogram'), legend: $('legend'),
   view: $('view'), fit: $('fit'), showEdges: $('show-edges'), showSteiner: $('show-steiner'),
-  dropHint: $('drop-hint'), downloads: $('downloads'),
+  dropHint: $('drop-hint'), downloads: $('downloads'), formError: $('form-error'), linkNote: $('link-note'),
 };
+// The number fields checked against their ranges (form.js) before a run.
+const FIELDS = { maxAngle: ui.maxAngle, minAngle: ui.minAngle, maxArea: ui.maxArea, maxSteiner: ui.maxSteiner, tolerance: ui.tolerance };
 
 const BUNDLED_FONTS = {
   'pagella-regular': 'fonts/texgyrepagella-regular.otf',
@@ -36,9 +41,15 @@ const TEXT_DEFAULTS = { text: 'Acute', font: 'pagella-regular', tol: '5' };
 const view = new MeshView(ui.view);
 const draw = new DrawTool(view, (rings) => {
   current = { type: 'draw', rings };
+  inputChanged();
   showSource(`drawing: ${rings.length} ring${rings.length === 1 ? '' : 's'}`);
+  setStatus(droppedRing, droppedRing ? 'warn' : '');
+  droppedRing = '';
   saveUrl();
 });
+let droppedRing = '';  // why the last closed ring was dropped, said until the next ring
+draw.onDropped = (why) => { droppedRing = `The ring just closed was dropped: ${why}.`; };
+draw.onVertex = (n) => showSource(`drawing: ${n} ${n === 1 ? 'vertex' : 'vertices'} in the open ring; click the first one (or press Enter) to close it`);
 
 const fonts = new Map();      // key -> Promise<opentype Font>
 let current = { type: 'text' };  // the input the Mesh button meshes
@@ -48,6 +59,7 @@ let running = null;           // AbortController of the run in progress
 let runs = 0;
 let vocabulary = null;        // the mesher's names and defaults, once it has loaded
 let floorInfo = null;         // the current input's { corner, floor, from: 'input' | 'run' }
+let inputSeq = 0;             // bumped by every input change and run: late previews are dropped
 warmUp();
 const enginePromise = loadEngine();
 enginePromise.then(takeVocabulary, (e) => setStatus(`Could not load the mesher: ${e.message}`, 'error'));
@@ -97,13 +109,15 @@ async function buildInput(src) {
       if (!text.trim()) throw new Error('type some text to mesh');
       const font = await getFont(ui.font.value);
       const rings = textToRings(font, text, tolerance());
-      if (!rings.length) throw new Error(`"${text}" has no outlines in this font`);
+      const fontLabel = ui.font.selectedOptions[0].text;
+      const missing = missingGlyphs(font, text);
+      const noGlyph = missing.length ? `${fontLabel} has no glyph for ${missing.map((c) => `"${c}"`).join(', ')}` : '';
+      if (!rings.length) throw new Error(noGlyph ? `${noGlyph}: nothing to mesh` : `"${text}" has no outlines in this font`);
       return { rings, fill: 'nonzero', label: slug(text), key: `text:${ui.font.value}:${text}`,
-        note: `"${text}" in ${ui.font.selectedOptions[0].text}` };
+        note: `"${text}" in ${fontLabel}`, warning: noGlyph ? `${noGlyph}: left out.` : '' };
     }
     case 'file': case 'sample': {
-      const am = await enginePromise.catch(() => null);
-      const input = await loadFile(src.file, { am, tolerance: tolerance() });
+      const input = await readFile(src.file);
       if (input.kind === 'font') throw new Error('a font sets the text: type in the Text box');
       return { ...input, key: `${src.type}:${src.file.name}:${src.file.size}:${src.file.lastModified || ''}` };
     }
@@ -119,52 +133,115 @@ function slug(text) {
   return text.trim().replace(/[^\p{L}\p{N}]+/gu, '-').replace(/^-|-$/g, '').slice(0, 40) || 'text';
 }
 
+// A new input makes the shown result stale: a run of the old input still going is stopped
+// (its mesh must not replace the new preview), and the stats, histogram and downloads go.
+function inputChanged() {
+  inputSeq++;
+  stopRun();
+  clearResult();
+}
+
 async function preview() {
+  inputChanged();
+  const seq = inputSeq;
   try {
     const input = await buildInput(current);
+    if (seq !== inputSeq) return;  // a newer input or a run took over meanwhile
     view.setPreview(input.pslg ? { pslg: input.pslg } : { rings: input.rings, fill: input.fill });
     if (current.type !== 'draw') draw.hide();
     view.fit();
-    const n = input.pslg ? input.pslg.points.length / 2 : input.rings.reduce((s, r) => s + r.length, 0);
-    showSource(`${input.note || input.label}: ${n} input vertices. Press Mesh.`);
+    showSource(describeInput(input, ' Press Mesh.'));
     const am = await enginePromise.catch(() => null);
-    if (am) {
+    if (am && seq === inputSeq) {
       floorInfo = measureFloor(am, input.pslg || am.fromRings(input.rings, { fill: input.fill }));
       showFloor();
     }
     setStatus('');
   } catch (e) {
-    setStatus(e.message, 'error');
+    if (seq === inputSeq) inputFailed(e);
   }
 }
 
-// Files are read whole and parsed on the page before meshing; past this size a file is refused
-// with a message instead of freezing the tab (the CLI and the npm package take any size).
+// The source line: what the input is, its size, and what the page could not take from it.
+function describeInput(input, next = '') {
+  const n = input.pslg ? input.pslg.points.length / 2 : input.rings.reduce((s, r) => s + r.length, 0);
+  return `${input.note || input.label}: ${n} input vertices.${next}${linkNote()}${input.warning ? ` ${input.warning}` : ''}`;
+}
+
+// The current input cannot be meshed: nothing of the previous one stays on screen to be
+// taken for it, and Mesh says the same again.
+function inputFailed(e) {
+  view.clear();
+  draw.hide();
+  floorInfo = null;
+  showFloor();
+  const name = current.file ? current.file.name : current.type === 'text' ? `"${ui.text.value}"` : current.type;
+  showSource(`${name}: cannot be meshed (the message below says why).${linkNote()}`);
+  setStatus(e.message, 'error');
+}
+
+// A link to the page holds text, a sample or a drawing, not a file's contents.
+function linkNote() {
+  return current.type === 'file' ? ' A link to this page cannot carry the file: it opens the default text.' : '';
+}
+
+function stopRun() {
+  if (!running) return;
+  const c = running;
+  running = null;
+  c.abort();
+  ui.cancel.disabled = true;
+  ui.progress.hidden = true;
+}
+
+function clearResult() {
+  lastResult = null;
+  ui.stats.replaceChildren();
+  ui.stats.dataset.result = '';
+  drawHistogram(ui.histogram, null);
+  for (const b of ui.downloads.querySelectorAll('[data-format]')) b.disabled = true;
+}
+
+// Past this size a file is refused with a message instead of freezing the tab (the CLI and the
+// npm package take any size).
 export const MAX_FILE_MB = 32;
 
-async function takeFile(file, type = 'file') {
+// Files are read whole and parsed on the page; past MAX_FILE_MB a file is refused unread.
+async function readFile(file) {
   if (file.size > MAX_FILE_MB * 1024 * 1024) {
-    setStatus(`${file.name} is ${(file.size / 1048576).toFixed(1)} MB: files over ${MAX_FILE_MB} MB ` +
-              'are refused here (the acutemesh CLI and npm package take any size)', 'error');
+    throw new Error(`${file.name} is ${(file.size / 1048576).toFixed(1)} MB: files over ${MAX_FILE_MB} MB ` +
+                    'are refused here (the acutemesh CLI and npm package take any size)');
+  }
+  const am = await enginePromise.catch(() => null);
+  return loadFile(file, { am, tolerance: tolerance() });
+}
+
+async function takeFile(file, type = 'file') {
+  if (draw.active) toggleDraw();
+  let input;
+  try {
+    input = await readFile(file);
+  } catch (e) {
+    // The unreadable file is now the current input: Mesh must not go back to the last one.
+    current = { type, file, name: type === 'sample' ? ui.sample.value : undefined };
+    if (type === 'file') ui.sample.value = '';
+    inputChanged();
+    saveUrl();
+    inputFailed(e);
     return;
   }
-  try {
-    const am = await enginePromise.catch(() => null);
-    const input = await loadFile(file, { am, tolerance: tolerance() });
-    if (input.kind === 'font') {
-      const font = addFont(input.buffer, input.label);
-      current = { type: 'text' };
-      showSource(`font ${fontName(font, input.label)} loaded`);
-    } else {
-      current = { type, file, name: type === 'sample' ? ui.sample.value : undefined };
-      if (type === 'file') ui.sample.value = '';
-    }
-    if (draw.active) toggleDraw();
+  if (input.kind === 'font') {
+    const font = addFont(input.buffer, input.label);
+    current = { type: 'text' };
     saveUrl();
     await preview();
-  } catch (e) {
-    setStatus(e.message, 'error');
+    showSource(`font ${fontName(font, input.label)} loaded. ${ui.source.textContent}`);
+    return;
   }
+  current = { type, file, name: type === 'sample' ? ui.sample.value : undefined };
+  if (type === 'file') ui.sample.value = '';
+  saveUrl();
+  await preview();
 }
 
 async function takeSample(name) {
@@ -202,6 +279,7 @@ function syncOptionInputs() {
   ui.maxAngleAuto.disabled = m !== 'acute';
   showFloor();
   for (const el of [ui.minAngle, ui.maxArea, ui.maxSteiner]) el.disabled = m === 'cdt';
+  checkFields(FIELDS, ui.formError);
   // An empty input means the mesher's default, which the placeholder shows.
   if (!vocabulary) return;
   const d = vocabulary.defaults;
@@ -247,7 +325,7 @@ function takeVocabulary(am) {
     b.dataset.testid = `download-${f.name}`;
     b.dataset.format = f.name;
     b.textContent = f.extension;
-    b.title = f.description;
+    b.title = f.name === 'svg' ? 'SVG: the mesh as the view draws it, triangles coloured by their largest angle' : f.description;
     b.disabled = lastResult === null;
     b.addEventListener('click', () => download(f.name));
     ui.downloads.insertBefore(b, png);
@@ -257,7 +335,14 @@ function takeVocabulary(am) {
 
 // ---- running --------------------------------------------------------------------------------
 async function run() {
+  const problems = checkFields(FIELDS, ui.formError);
+  if (problems.length) {
+    setStatus(`Not meshed: ${problems.join(' ')}`, 'error');
+    Object.values(FIELDS).find((el) => el.getAttribute('aria-invalid') === 'true')?.focus();
+    return;
+  }
   if (running) running.abort();
+  inputSeq++;
   const controller = new AbortController();
   running = controller;
   ui.cancel.disabled = false;
@@ -309,6 +394,7 @@ function show(am, pslg, input, options, m, wallMs) {
   floorInfo = { corner, floor: Number.isFinite(s.angleFloor) && s.smallestDomainAngle < 360 ? s.angleFloor : angleFloor(corner), from: 'run' };
   showFloor();
   view.setMesh(m, a.cls, nInput);
+  showSource(describeInput(input));
   draw.hide();
   if (input.key !== lastMeshedKey) view.fit();
   lastMeshedKey = input.key;
@@ -320,7 +406,7 @@ function show(am, pslg, input, options, m, wallMs) {
     floor: options.mode === 'acute' ? floorInfo.floor : null,
     max: finite(s.maxAngle),
   };
-  lastResult = { am, mesh: m, label: input.label, angles: a.angles, marks };
+  lastResult = { am, mesh: m, label: input.label, angles: a.angles, marks, cls: a.cls, nInput };
   drawHistogram(ui.histogram, a.angles, marks);
   const result = {
     triangles: m.triangles.length / 3,
@@ -338,6 +424,7 @@ function show(am, pslg, input, options, m, wallMs) {
     smallestDomainAngle: floorInfo.corner,
     inputVertices: nInput,
     wallMilliseconds: round(wallMs, 1),
+    status: m.status ?? null,
     options,  // as the page asked for them
   };
   renderStats(result);
@@ -345,16 +432,8 @@ function show(am, pslg, input, options, m, wallMs) {
   ui.stats.dataset.runs = String(++runs);
   takeVocabulary(am);
   for (const b of ui.downloads.querySelectorAll('[data-format]')) b.disabled = false;
-  const warnings = s.warnings && s.warnings.length ? `\n${s.warnings.slice(0, 3).join('\n')}` : '';
-  const verdict = options.mode === 'acute' || options.mode === 'nonobtuse'
-    ? (result.certified ? 'certified ' + (options.mode === 'acute' ? 'acute' : 'non-obtuse') : 'NOT certified: the budget ran out (the best mesh so far is shown)')
-    : options.mode === 'quality'
-      ? (result.targetMet ? 'quality target met' : `quality target not met${m.message ? ` (${m.message})` : ''}`)
-      : 'constrained Delaunay';
-  const sentence = boundSentence(result);
-  setStatus(`Done in ${Math.round(wallMs)} ms: ${verdict}.${sentence ? ` ${sentence}` : ''}${warnings}`,
-    ((options.mode === 'acute' || options.mode === 'nonobtuse') && !result.certified) ||
-    (options.mode === 'acute' && !result.targetMet) ? 'warn' : '');
+  const said = verdict(result, m, s.warnings || []);
+  setStatus(said.text, said.kind);
   // The first mesh on screen: when the frame that draws it has run.
   if (runs === 1) {
     requestAnimationFrame(() => {
@@ -389,7 +468,7 @@ function renderStats(r) {
       ? `< ${r.angleBound}°` : `${truncate(r.maxAngle, 4)}°`],
     // Certification is of acuteness / non-obtuseness: it does not apply to the other modes.
     ['Certified', r.mode === 'acute' || r.mode === 'nonobtuse' ? (r.certified ? 'yes' : 'no') : 'n/a'],
-    ['Time', `${r.milliseconds} ms`],
+    ['Time', formatMs(r.milliseconds)],
   ];
   if (r.mode === 'acute') {
     const target = r.askedMaxAngle === AUTO ? 'auto' : `${r.askedMaxAngle}°`;
@@ -421,7 +500,14 @@ function buildLegend() {
   const st = document.createElement('span');
   st.className = 'mark-steiner';
   st.append(document.createElement('i'), 'Steiner point');
-  ui.legend.replaceChildren(...items, seg, st);
+  // The histogram's grey bars: angles below 60 degrees, never a triangle's largest, so they
+  // have no triangle colour.
+  const small = document.createElement('span');
+  small.className = 'mark-small';
+  const swatch = document.createElement('i');
+  swatch.style.background = SMALL_ANGLE_COLOR;
+  small.append(swatch, 'histogram: angles < 60° (never a largest)');
+  ui.legend.replaceChildren(...items, seg, st, small);
   ui.legend.title = 'Triangles are coloured by their largest angle';
 }
 
@@ -445,7 +531,9 @@ function download(format) {
     return;
   }
   const f = am.vocabulary.outputFormats.find((e) => e.name === format);
-  saveBlob(new Blob([am.write(mesh, format)], { type: f.mediaType }), `${label}${f.extension}`);
+  // SVG: the picture as the view colours it, not the mesher's one-colour drawing.
+  const text = format === 'svg' ? meshToSvg(mesh, lastResult.cls, lastResult.nInput) : am.write(mesh, format);
+  saveBlob(new Blob([text], { type: f.mediaType }), `${label}${f.extension}`);
 }
 
 // ---- URL state ------------------------------------------------------------------------------
@@ -453,9 +541,9 @@ function saveUrl() {
   const p = new URLSearchParams();
   for (const [k, d] of Object.entries(OPTION_DEFAULTS)) {
     const v = k === 'maxAngle' && ui.maxAngleAuto.checked ? AUTO : ui[k].value;
-    if (v !== d && v !== '') p.set(k, v);
+    if (v !== d && v !== '' && !(RANGES[k] && v !== AUTO && problem(k, v))) p.set(k, v);
   }
-  if (ui.tolerance.value !== TEXT_DEFAULTS.tol) p.set('tol', ui.tolerance.value);
+  if (ui.tolerance.value !== TEXT_DEFAULTS.tol && !problem('tolerance', ui.tolerance.value)) p.set('tol', ui.tolerance.value);
   if (current.type === 'text') {
     if (ui.text.value !== TEXT_DEFAULTS.text) p.set('text', ui.text.value);
     if (ui.font.value !== TEXT_DEFAULTS.font && BUNDLED_FONTS[ui.font.value]) p.set('font', ui.font.value);
@@ -468,16 +556,33 @@ function saveUrl() {
   history.replaceState(null, '', q ? `?${q}` : location.pathname);
 }
 
+// A value in the link that the page does not take falls back to the default, and says so.
 function loadUrl() {
   const p = new URLSearchParams(location.search);
-  for (const k of Object.keys(OPTION_DEFAULTS)) if (p.has(k)) ui[k].value = p.get(k);
-  // maxAngle=auto ticks the box (left as is when this mesher turns out not to take 'auto').
-  if (p.get('maxAngle') === AUTO) {
-    ui.maxAngleAuto.checked = true;
-    ui.maxAngle.value = OPTION_DEFAULTS.maxAngle;
+  const notes = [];
+  const fallBack = (k, v, why, used) => notes.push(`The link's ${k}=${v} ${why}: ${used} is used instead.`);
+  for (const [k, d] of Object.entries(OPTION_DEFAULTS)) {
+    if (!p.has(k)) continue;
+    const v = p.get(k);
+    if (k === 'maxAngle' && v === AUTO) {
+      // maxAngle=auto ticks the box.
+      ui.maxAngleAuto.checked = true;
+      ui.maxAngle.value = d;
+    } else if (k === 'mode' && ![...ui.mode.options].some((o) => o.value === v)) {
+      fallBack(k, v, 'is not a mode here', ui.mode.options[0].textContent);
+    } else if (RANGES[k] && problem(k, v)) {
+      fallBack(k, v, `is out of range (${RANGES[k].label.toLowerCase()}: ${RANGES[k].words})`, `${d}${RANGES[k].unit}`);
+    } else {
+      ui[k].value = v;
+    }
   }
-  if (![...ui.mode.options].some((o) => o.value === ui.mode.value)) ui.mode.value = 'acute';
-  if (p.has('tol')) ui.tolerance.value = p.get('tol');
+  if (p.has('tol')) {
+    const v = p.get('tol');
+    if (problem('tolerance', v)) fallBack('tol', v, `is out of range (tolerance: ${RANGES.tolerance.words})`, `${TEXT_DEFAULTS.tol}‰`);
+    else ui.tolerance.value = v;
+  }
+  ui.linkNote.textContent = notes.join(' ');
+  ui.linkNote.hidden = !notes.length;
   if (p.has('text')) ui.text.value = p.get('text');
   if (p.has('font') && BUNDLED_FONTS[p.get('font')]) ui.font.value = p.get('font');
   if (p.has('sample') && [...ui.sample.options].some((o) => o.value === p.get('sample'))) {
@@ -497,18 +602,20 @@ function toggleDraw() {
     ui.draw.setAttribute('aria-pressed', 'false');
   } else {
     if (current.type !== 'draw') draw.setRings([]);
+    inputChanged();
     view.clear();
     draw.start();
     ui.draw.setAttribute('aria-pressed', 'true');
     current = { type: 'draw', rings: draw.rings };
-    showSource('drawing: click to place vertices, click the first one to close the ring');
+    showSource('drawing: click to place vertices, click the first one to close the ring ' +
+               '(keyboard: arrows move the cross-hair, Space places a vertex, Enter closes the ring)');
   }
   ui.drawClose.disabled = ui.drawClear.disabled = !draw.active;
 }
 
 // ---- wiring -------------------------------------------------------------------------------
 function wire() {
-  ui.run.addEventListener('click', () => { if (draw.active) toggleDraw(); run(); });
+  ui.run.addEventListener('click', () => { ui.linkNote.hidden = true; if (draw.active) toggleDraw(); run(); });
   ui.cancel.addEventListener('click', () => { if (running) running.abort(); });
   const textChanged = () => { current = { type: 'text' }; ui.sample.value = ''; saveUrl(); preview(); };
   ui.text.addEventListener('input', textChanged);
@@ -523,6 +630,8 @@ function wire() {
   for (const el of [ui.mode, ui.maxAngle, ui.maxAngleAuto, ui.minAngle, ui.maxArea, ui.maxSteiner]) {
     el.addEventListener('change', () => { syncOptionInputs(); saveUrl(); });
   }
+  // Out-of-range values are said while they are typed, not only when Mesh is pressed.
+  for (const el of Object.values(FIELDS)) el.addEventListener('input', () => checkFields(FIELDS, ui.formError));
   ui.draw.addEventListener('click', toggleDraw);
   ui.drawClose.addEventListener('click', () => draw.closeRing());
   ui.drawClear.addEventListener('click', () => draw.clear());

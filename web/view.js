@@ -12,6 +12,9 @@ import { CLASSES } from './angles.js';
 const SEGMENT_COLOR = '#111';
 const STEINER_COLOR = '#c2185b';
 const BG = '#ffffff';
+const STEINER_SHARE = 0.15; // a Steiner dot's radius: this share of its shortest edge...
+const STEINER_MAX_PX = 3;   // ...up to this many CSS pixels
+const DOT_MIN_PX = 0.6;     // smaller dots are not drawn
 const SLOW_FRAME_MS = 24;   // above this, gestures use the bitmap path
 const SETTLE_MS = 140;      // pause after which a gesture counts as over
 
@@ -28,8 +31,11 @@ export class MeshView {
     this.showSteiner = true;
     this.overlay = null;    // (ctx, view) => void, drawn last in CSS pixels (drawing tool)
     this.onClick = null;    // (x, y, event) => void in world coordinates
+    this.onKey = null;      // (keydown event) => true when it took the key (drawing tool)
     this.lastFullMs = 0;
     this.frameCount = 0;
+    this.probe = Object.assign(document.createElement('canvas'), { width: 1, height: 1 })
+      .getContext('2d', { willReadFrequently: true });
     this.cache = document.createElement('canvas');
     this.cacheXform = null;
     this.interacting = false;
@@ -49,10 +55,12 @@ export class MeshView {
     let sum = 0, count = 0;
     for (const tile of tiles) { sum += tile.edgeSum; count += tile.edgeCount; }
     this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge: count ? sum / count : 0,
-      segments: segmentPath(p, m.segments) };
+      segments: segmentPath(p, m.segments), shortest: shortestEdges(p, t) };
     this.preview = null;
-    this.bounds = boundsOf(p, t);
+    this.bounds = mainBounds(meshParts(p, t));
+    this.canvas.dataset.extent = Object.values(boundsOf(p, t)).join(',');
     this.cacheXform = null;
+    this.canvas.dataset.content = 'mesh';
     this.requestRender();
   }
 
@@ -73,13 +81,15 @@ export class MeshView {
     }
     this.preview = { path, fill: fill === 'nonzero' ? 'nonzero' : 'evenodd', segments, points };
     this.mesh = null;
-    this.bounds = boundsOf(points);
+    this.bounds = rings ? mainBounds(rings.map(ringPart)) : boundsOf(points);
+    this.canvas.dataset.content = 'preview';
     this.requestRender();
   }
 
   clear() {
     this.mesh = null;
     this.preview = null;
+    this.canvas.dataset.content = '';
     this.requestRender();
   }
 
@@ -95,6 +105,7 @@ export class MeshView {
     if (!Number.isFinite(this.s) || this.s <= 0) this.s = 1;
     this.tx = this.w / 2 - ((bounds.x0 + bounds.x1) / 2) * this.s;
     this.ty = this.h / 2 + ((bounds.y0 + bounds.y1) / 2) * this.s;
+    this.canvas.dataset.fit = [bounds.x0, bounds.y0, bounds.x1, bounds.y1].join(',');
     this.requestRender();
   }
 
@@ -123,9 +134,12 @@ export class MeshView {
     if (fast) this.#renderCached();
     else {
       this.#renderFull();
-      // Canvas drawing is recorded and rasterised later, off this measurement; reading one
-      // pixel forces the raster now, so the time below is what the frame really costs.
-      this.ctx.getImageData(0, 0, 1, 1);
+      // Canvas drawing is recorded and rasterised later, off this measurement; copying one
+      // pixel forces the raster now, so the time below is what the frame really costs. The
+      // copy goes to a 1-pixel canvas made for reading: reading the view itself every frame
+      // would make the browser warn (and move the view to a slower, readable canvas).
+      this.probe.drawImage(this.canvas, 0, 0, 1, 1, 0, 0, 1, 1);
+      this.probe.getImageData(0, 0, 1, 1);
       this.lastFullMs = performance.now() - t0;
       this.canvas.dataset.renderMs = this.lastFullMs.toFixed(1);
       if (this.lastFullMs > SLOW_FRAME_MS) this.#storeCache();
@@ -168,7 +182,7 @@ export class MeshView {
       ctx.strokeStyle = SEGMENT_COLOR;
       ctx.lineWidth = 1.6 * px;
       ctx.stroke(m.segments);
-      if (this.showSteiner && edgePx > 3) this.#drawSteiner();
+      if (this.showSteiner) this.#drawSteiner();
     } else if (this.preview) {
       const p = this.preview;
       if (p.path) {
@@ -188,24 +202,36 @@ export class MeshView {
   }
 
   // Steiner points are the vertices past the input's: the mesher keeps input vertex i at i.
+  // Each dot is sized by its shortest edge on screen, so it never covers its triangles (dense
+  // parts show none until zoomed in) and grows with the zoom up to STEINER_MAX_PX.
   #drawSteiner() {
-    this.#drawDots(this.mesh.points, this.mesh.nInput, STEINER_COLOR, 1.8);
+    const { points, nInput, shortest } = this.mesh;
+    const s = this.s;
+    const drawn = this.#drawDots(points, nInput, STEINER_COLOR,
+      (v) => (Number.isFinite(shortest[v]) ? Math.min(STEINER_MAX_PX, STEINER_SHARE * shortest[v] * s) : 0));
+    this.canvas.dataset.steiner = drawn.join(',');
   }
 
+  // Dots of radius r(vertex) in CSS pixels (none below DOT_MIN_PX); returns [count, smallest
+  // radius, largest radius] of those drawn.
   #drawDots(points, first, color, r) {
     const { ctx, dpr, s, tx, ty, w, h } = this;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     const path = new Path2D();
-    let n = 0;
+    let n = 0, rMin = Infinity, rMax = 0;
     for (let i = 2 * first; i + 1 < points.length; i += 2) {
       const x = points[i] * s + tx, y = -points[i + 1] * s + ty;
-      if (x < -r || y < -r || x > w + r || y > h + r) continue;
-      path.moveTo(x + r, y);
-      path.arc(x, y, r, 0, 2 * Math.PI);
+      const radius = typeof r === 'number' ? r : r(i / 2);
+      if (!(radius >= DOT_MIN_PX) || x < -radius || y < -radius || x > w + radius || y > h + radius) continue;
+      path.moveTo(x + radius, y);
+      path.arc(x, y, radius, 0, 2 * Math.PI);
+      rMin = Math.min(rMin, radius);
+      rMax = Math.max(rMax, radius);
       if (++n > 200000) break;
     }
     ctx.fillStyle = color;
     ctx.fill(path);
+    return n ? [n, +rMin.toFixed(3), +rMax.toFixed(3)] : [0, 0, 0];
   }
 
   #storeCache() {
@@ -305,6 +331,7 @@ export class MeshView {
     cv.addEventListener('pointercancel', end);
     cv.addEventListener('dblclick', (e) => { if (!this.onClick) this.fit(); e.preventDefault(); });
     cv.addEventListener('keydown', (e) => {
+      if (this.onKey && this.onKey(e)) { e.preventDefault(); return; }  // the drawing tool's keys
       const step = 40;
       const keys = {
         ArrowLeft: () => this.panBy(step, 0), ArrowRight: () => this.panBy(-step, 0),
@@ -368,6 +395,66 @@ function boundsOf(points, triangles) {
   return { x0, y0, x1, y1 };
 }
 
+// What "fit" frames: the largest parts of the picture that together hold 99% of its area, and
+// the parts near them, so a far islet (South Africa's Prince Edward Islands) does not shrink
+// the country to a corner; zooming out still shows it. parts: [{ area, x0, y0, x1, y1 }].
+const FIT_AREA_SHARE = 0.99;
+const FIT_NEAR = 0.15;  // parts whose centre is within this share of the frame's size count
+
+function mainBounds(parts) {
+  const total = parts.reduce((sum, q) => sum + q.area, 0);
+  if (!(total > 0)) return parts.reduce(union, { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity });
+  const sorted = [...parts].sort((a, b) => b.area - a.area);
+  let b = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity }, sum = 0, k = 0;
+  while (k < sorted.length && sum < FIT_AREA_SHARE * total) { b = union(b, sorted[k]); sum += sorted[k++].area; }
+  const mx = FIT_NEAR * (b.x1 - b.x0), my = FIT_NEAR * (b.y1 - b.y0);
+  const near = { x0: b.x0 - mx, y0: b.y0 - my, x1: b.x1 + mx, y1: b.y1 + my };
+  for (const q of sorted.slice(k)) {
+    const cx = (q.x0 + q.x1) / 2, cy = (q.y0 + q.y1) / 2;
+    if (cx >= near.x0 && cx <= near.x1 && cy >= near.y0 && cy <= near.y1) b = union(b, q);
+  }
+  return b;
+}
+
+function union(a, b) {
+  return { x0: Math.min(a.x0, b.x0), y0: Math.min(a.y0, b.y0), x1: Math.max(a.x1, b.x1), y1: Math.max(a.y1, b.y1) };
+}
+
+function ringPart(ring) {
+  let area = 0;
+  const b = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity };
+  ring.forEach(([x, y], i) => {
+    const [u, v] = ring[(i + 1) % ring.length];
+    area += x * v - u * y;
+    b.x0 = Math.min(b.x0, x); b.x1 = Math.max(b.x1, x); b.y0 = Math.min(b.y0, y); b.y1 = Math.max(b.y1, y);
+  });
+  return { area: Math.abs(area) / 2, ...b };
+}
+
+// The mesh's connected parts (triangles joined through shared vertices), with area and bounds.
+function meshParts(p, t) {
+  const parent = new Int32Array(p.length / 2).map((_, i) => i);
+  const root = (i) => { while (parent[i] !== i) i = parent[i] = parent[parent[i]]; return i; };
+  for (let i = 0; i < t.length; i += 3) {
+    const a = root(t[i]);
+    parent[root(t[i + 1])] = a;
+    parent[root(t[i + 2])] = a;
+  }
+  const parts = new Map();
+  for (let i = 0; i < t.length; i += 3) {
+    const r = root(t[i]);
+    let q = parts.get(r);
+    if (!q) parts.set(r, q = { area: 0, x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity });
+    const [a, b, c] = [2 * t[i], 2 * t[i + 1], 2 * t[i + 2]];
+    q.area += Math.abs((p[b] - p[a]) * (p[c + 1] - p[a + 1]) - (p[c] - p[a]) * (p[b + 1] - p[a + 1])) / 2;
+    for (const v of [a, b, c]) {
+      q.x0 = Math.min(q.x0, p[v]); q.x1 = Math.max(q.x1, p[v]);
+      q.y0 = Math.min(q.y0, p[v + 1]); q.y1 = Math.max(q.y1, p[v + 1]);
+    }
+  }
+  return [...parts.values()];
+}
+
 // A neutral grey between the triangle colours and the ink, opaque.
 function mix(alpha) {
   const v = Math.round(255 * (1 - alpha) * 0.55 + 24 * alpha);
@@ -420,6 +507,20 @@ function buildTiles(p, t, cls) {
     }
   }
   return tiles.filter((tile) => tile.x1 >= tile.x0);
+}
+
+// Per vertex, the length of its shortest edge in the mesh (Infinity for an unused vertex).
+function shortestEdges(p, t) {
+  const out = new Float64Array(p.length / 2).fill(Infinity);
+  for (let i = 0; i < t.length; i += 3) {
+    for (let k = 0; k < 3; k++) {
+      const a = t[i + k], b = t[i + (k + 1) % 3];
+      const d = Math.hypot(p[2 * a] - p[2 * b], p[2 * a + 1] - p[2 * b + 1]);
+      if (d < out[a]) out[a] = d;
+      if (d < out[b]) out[b] = d;
+    }
+  }
+  return out;
 }
 
 function segmentPath(p, seg) {

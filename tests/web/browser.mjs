@@ -64,3 +64,15 @@ export async function waitForRun(page, n, timeout = 20000) {
     n, { timeout });
   return result(page);
 }
+
+// Presses Mesh and waits for the result it brings.
+export async function runAndWait(page, timeout = 60000) {
+  const before = Number(await page.getAttribute('[data-testid=stats]', 'data-runs'));
+  await page.click('[data-testid=run-button]');
+  return waitForRun(page, before + 1, timeout);
+}
+
+// The status line: its text and its kind ('', 'warn' or 'error').
+export async function status(page) {
+  return page.$eval('#status', (s) => ({ text: s.textContent, kind: s.className.replace('status', '').trim() }));
+}

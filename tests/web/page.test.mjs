@@ -44,7 +44,7 @@ async function runAndWait(page) {
 async function upload(page, path) {
   await page.setInputFiles('[data-testid=file-input]', path);
   // Choosing a file previews it; the source line names what was read.
-  await page.waitForFunction(() => /input vertices/.test(document.getElementById('source').textContent));
+  await page.waitForFunction(() => /Press Mesh\./.test(document.getElementById('source').textContent));
 }
 
 async function downloadText(page, testid) {
@@ -135,7 +135,7 @@ test('quality beyond 40 degrees: the page says the bound was not reached and why
   assert.equal(r.mode, 'quality');
   assert.equal(r.targetMet, false);
   const status = await page.textContent('#status');
-  assert.match(status, /quality target not met \(a minimum angle of 44 degrees was not reached/);
+  assert.match(status, /Target not met \(a minimum angle of 44 degrees was not reached/);
   assert.match(status, /refined to 40 degrees/);
   assert.deepEqual(errors, []);
   await context.close();
@@ -211,7 +211,12 @@ test('a file over the size limit is refused with a message; the page meshes on',
   await page.setInputFiles('[data-testid=file-input]', { name: 'big.node', mimeType: 'text/plain', buffer: big });
   await page.waitForFunction(() => /over 32 MB are refused/.test(document.getElementById('status').textContent));
   assert.equal(await page.getAttribute('[data-testid=stats]', 'data-runs'), runs, 'a refused file must not mesh');
-  const r = await runAndWait(page);  // the current input (the default text) still meshes
+  // The refused file is the current input now: Mesh says the same, and meshes nothing else.
+  await page.click('[data-testid=run-button]');
+  await page.waitForFunction(() => /over 32 MB are refused/.test(document.getElementById('status').textContent));
+  assert.equal(await page.getAttribute('[data-testid=stats]', 'data-runs'), runs, 'Mesh meshed the previous input');
+  await page.fill('[data-testid=text-input]', 'Acute');
+  const r = await runAndWait(page);  // the page meshes on
   assertCertifiedAcute(r, 'after a refused file');
   assert.deepEqual(errors, []);
   await context.close();
@@ -491,7 +496,7 @@ test('max angle: a bound that was not met is said in words, with what was reache
   assert.ok(r.angleFloor > 65, `floor ${r.angleFloor}`);
   assert.equal(r.targetMet, false);
   const status = await page.textContent('#status');
-  const reached = /The bound of 65° was not met, below what the input allows: the largest angle is (\d+\.\d{3})°/.exec(status);
+  const reached = /Target not met: the bound of 65° was not met, below what the input allows: the largest angle is (\d+\.\d{3})°/.exec(status);
   assert.ok(reached, `status: ${status}`);
   assert.equal(Number(reached[1]), Math.trunc(r.maxAngle * 1000) / 1000);
   assert.match(status, new RegExp(`this input's floor: ${Number(r.angleFloor.toFixed(1))}°`));

@@ -16,9 +16,11 @@ export function parseFont(buffer) {
 // Glyph by glyph with pair kerning, not font.getPath(): opentype.js 2.0's substitution
 // engine throws on lookups it does not support (TeX Gyre's 'ccmp' among them), and ligatures
 // are no gain for a mesh.
+// Characters the font has no glyph for (they would come out as its "missing" box) are left
+// out; missingGlyphs() names them so the page can say so.
 function layoutCommands(font, text, size) {
   const scale = size / font.unitsPerEm;
-  const glyphs = Array.from(text).map((ch) => font.charToGlyph(ch));
+  const glyphs = Array.from(text).filter((ch) => !isMissing(font, ch)).map((ch) => font.charToGlyph(ch));
   const commands = [];
   let x = 0;
   glyphs.forEach((g, i) => {
@@ -61,6 +63,13 @@ export function textToRings(font, text, tolerance) {
   }
   close();
   return cleanRings(rings);
+}
+
+const isMissing = (font, ch) => /\S/u.test(ch) && font.charToGlyphIndex(ch) === 0;
+
+// The distinct characters of `text` that `font` has no glyph for.
+export function missingGlyphs(font, text) {
+  return [...new Set(Array.from(text).filter((ch) => isMissing(font, ch)))];
 }
 
 export function fontName(font, fallback) {
