@@ -125,3 +125,29 @@ TEST(Progress, CancelFromTheCallbackLandsSoon) {
 }
 
 }  // namespace
+
+// Below 90 degrees the fraction moves within each bound of the descent too (its rounds), not
+// only from one bound to the next: the longest time it stands still is a small part of the run.
+TEST(Progress, FractionMovesBelow90) {
+  const Pslg in = gear();
+  Options o;
+  o.mode = Mode::Acute;
+  o.maxAngle = 75;
+  o.threads = 1;
+  std::vector<Report> reports;
+  const Clock::time_point start = Clock::now();
+  o.progress = [&](const Progress& p) { reports.push_back({since(start), p.phase, p.fraction}); };
+  mesh(in, o);
+  const double seconds = since(start);
+  double stillSince = 0, still = 0, last = -1;
+  for (const Report& p : reports) {
+    if (!refining(p.phase.c_str())) continue;
+    EXPECT_GE(p.fraction, last) << p.phase << " at " << p.at;
+    if (p.fraction > last) stillSince = p.at, last = p.fraction;
+    still = std::max(still, p.at - stillSince);
+  }
+  still = std::max(still, seconds - stillSince);
+  RecordProperty("seconds", std::to_string(seconds));
+  EXPECT_LT(still, std::max(0.5, seconds / 4)) << "the fraction stood still for " << still
+                                               << " s of " << seconds << " s";
+}

@@ -143,7 +143,13 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
     const Job job{input, at, target, strategy, budget, &limits, minEdge2};
     Refiner refiner(s, job);
     AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), moves);
-    if (!descent.run()) break;
+    // (Progress within the bound: the part of its rounds done, noted for the relay to send.)
+    auto within = [&](double part) {
+      if (ProgressRelay* relay = budget.progress())
+        relay->note("improve", done + share * (double(i) + part) / double(levels.size()),
+                    s.T.vertexCount());
+    };
+    if (!descent.run(within)) break;
     met = s;
     reached = level;
   }
@@ -154,7 +160,10 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
   const Target target(at);
   const Job job{input, at, target, strategy, budget, &limits, minEdge2};
   Refiner refiner(met, job);
-  if (!budget.stop()) refiner.polish();
+  if (!budget.stop()) {
+    const ProgressRelay::Scope quiet(budget.progress());  // (the polish's own fractions: not ours)
+    refiner.polish();
+  }
   Candidate polished = judge(std::move(met), input, options);
   return stopped.betterThan(polished) ? std::move(stopped) : std::move(polished);
 }

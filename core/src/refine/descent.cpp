@@ -537,8 +537,10 @@ size_t AngleDescent::repair(int depth) {
       bad.push_back({t, T.tri[3 * t], T.tri[3 * t + 1], T.tri[3 * t + 2]});
   double now = violation();
   size_t kept = 0;
-  for (const Bad& x : bad) {
+  for (size_t i = 0; i < bad.size(); ++i) {
+    const Bad& x = bad[i];
     if (job_.limits->reached(T.vertexCount()) || job_.budget.stop() || movesLeft_ == 0) break;
+    (*onProgress_)((double(round_) + double(i) / double(bad.size())) / kDescentRounds);
     const uint32_t* c = &T.tri[3 * x.t];
     if (c[0] != x.a || c[1] != x.b || c[2] != x.c || !job_.target.misses(s_, x.t)) continue;
     kept += fix(x.t, depth, now, now);
@@ -563,10 +565,12 @@ bool AngleDescent::unstick(double& least) {
   return false;
 }
 
-bool AngleDescent::run() {
+bool AngleDescent::run(const std::function<void(double)>& onProgress) {
+  onProgress_ = &onProgress;
   double least = INFINITY;
   int depth = 1;
-  for (int stale = 0, round = 0; round < kDescentRounds; ++round) {
+  for (int stale = 0; round_ < kDescentRounds; ++round_) {
+    onProgress(double(round_) / kDescentRounds);
     for (int sweep = 0; sweep < kDescentSweeps && !job_.budget.stop(); ++sweep)
       if (smooth() + flipPass() == 0) break;
     const double now = violation();

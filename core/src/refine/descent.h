@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "boundary.h"
@@ -32,8 +33,9 @@ class AngleDescent {
                uint64_t& moves)
       : s_(s), job_(job), insertion_(insertion), boundary_(boundary), movesLeft_(moves) {}
 
-  // Rounds as above; true if every triangle of the domain then meets the target.
-  bool run();
+  // Rounds as above, onProgress told as it goes what part of kDescentRounds is done; true if
+  // every triangle of the domain then meets the target.
+  bool run(const std::function<void(double)>& onProgress);
   // One sweep of smoothing over every Steiner point; the number of points moved.
   size_t smooth();
 
@@ -77,6 +79,8 @@ class AngleDescent {
   Insertion& insertion_;
   Boundary& boundary_;
   uint64_t& movesLeft_;
+  const std::function<void(double)>* onProgress_ = nullptr;
+  int round_ = 0;
   // The star of the vertex being moved: its triangles, and whether each is in the domain.
   std::vector<uint32_t> star_;
   std::vector<uint8_t> starInside_;
