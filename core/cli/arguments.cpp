@@ -141,6 +141,25 @@ bool readFlag(const std::string& a, Arguments& args) {
   return true;
 }
 
+// A refinement target says which mode it is for: --max-angle alone means acute, --min-angle or
+// --max-area alone quality (as Triangle's -q and -a switch refinement on). A mode that has no
+// use for a target given with it is an error rather than a target silently ignored.
+std::string modeForTargets(bool modeGiven, bool maxAngle, bool quality, Mode& mode) {
+  if (!modeGiven) {
+    if (maxAngle) mode = Mode::Acute;
+    else if (quality) mode = Mode::Quality;
+    return "";
+  }
+  const std::string name = std::string(nameOf(mode));
+  if ((mode == Mode::Delaunay || mode == Mode::Cdt) && (maxAngle || quality))
+    return std::string(maxAngle ? "--max-angle" : "--min-angle / --max-area") +
+           " has no effect with --mode " + name +
+           ", which does not refine: use --mode acute, nonobtuse or quality (or leave --mode out)";
+  if (maxAngle && mode != Mode::Acute)
+    return "--max-angle is a target of --mode acute only, not of --mode " + name;
+  return "";
+}
+
 }  // namespace
 
 bool Arguments::wants(OutputFormat f) const {
@@ -157,8 +176,12 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
     c.error = std::move(message);
     return c;
   };
+  // The refinement targets given, for the mode they imply or contradict.
+  bool modeGiven = false, maxAngleGiven = false, minAngleGiven = false, maxAreaGiven = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
+    modeGiven |= a == "--mode", maxAngleGiven |= a == "--max-angle";
+    minAngleGiven |= a == "--min-angle", maxAreaGiven |= a == "--max-area";
     if (a == "-h" || a == "--help") {
       c.action = CommandLine::Help;
       return c;
@@ -180,8 +203,9 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
     }
   }
   if (args.input.empty()) return fail("no input file");
-  if (args.options.maxAngle == kAutoMaxAngle && args.options.mode != Mode::Acute)
-    return fail("--max-angle auto needs --mode acute");
+  std::string error = modeForTargets(modeGiven, maxAngleGiven, minAngleGiven || maxAreaGiven,
+                                     args.options.mode);
+  if (!error.empty()) return fail(error);
   return c;
 }
 

@@ -10,6 +10,7 @@
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
+#include "acutemesh/vocabulary.h"
 #include "angle_bound.h"
 #include "build.h"
 #include "domain_angles.h"
@@ -196,13 +197,12 @@ double smallestInputAngle(const Pslg& in) {
   return smallest * (180.0 / M_PI);
 }
 
-// Reports the smallest input angle, and says when the domain's corners make a target
+// Says when the domain's corners make a target
 // unreachable: a minimum angle above the smallest corner, or a maximum angle at or below the
 // floor (Stats::angleFloor). True for the latter: refinement then aims for the lowest bound
 // it can reach instead of spending the budget on the impossible.
-bool warnAboutInputAngles(const Pslg& input, const Options& target, Stats& stats) {
+bool warnAboutInputAngles(const Options& target, Stats& stats) {
   using detail::degreesText;
-  stats.smallestInputAngle = smallestInputAngle(input);
   const std::string corner = degreesText(stats.smallestDomainAngle);
   if (target.minAngle > stats.smallestDomainAngle)
     stats.warnings.push_back("the domain's smallest corner (" + corner + ") is below the minimum "
@@ -528,12 +528,23 @@ Result meshInRange(const Pslg& input, const Options& asked) {
   std::vector<uint8_t> freeVertex;
   std::vector<detail::ExactVertex> exact;
   bool belowFloor = false;
-  if (refining) {
-    T.inside = std::move(inside);
-    T.inside.resize(T.tri.size() / 3, 0);
+  T.inside = std::move(inside);
+  T.inside.resize(T.tri.size() / 3, 0);
+  // (The domain's corners for every constrained mode, so that a CDT's --stats says what a
+  // refinement could reach; Delaunay ignores the segments.)
+  if (options.mode != Mode::Delaunay) {
     stats.smallestDomainAngle = detail::smallestDomainAngle(T);
     stats.angleFloor = detail::angleFloor(stats.smallestDomainAngle);
-    belowFloor = warnAboutInputAngles(input, target, stats);
+    stats.smallestInputAngle = smallestInputAngle(input);
+  }
+  inside = std::move(T.inside);
+  if (refining) belowFloor = warnAboutInputAngles(target, stats);
+  if (!refining && (options.minAngle > 0 || options.maxArea > 0 || options.maxAngle != 90))
+    stats.warnings.push_back(std::string("minAngle, maxAngle and maxArea have no effect in mode ") +
+                             nameOf(options.mode) +
+                             ", which does not refine (modes quality, nonobtuse, acute do)");
+  if (refining) {
+    T.inside = std::move(inside);
     if (belowFloor) target.maxAngle = kAutoMaxAngle;
     step = detail::refine(T, input, target, budget, freeVertex, exact);
     inside = std::move(T.inside);

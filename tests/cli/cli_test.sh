@@ -342,7 +342,20 @@ check "bad max angle 'autox' says" stderr_has "--max-angle needs a number or aut
 check "bad max angle 90.5 message" run 2 --mode acute --max-angle 90.5 "$work/A.poly"
 check "bad max angle 90.5 says" stderr_has "--max-angle must be above 60 and at most 90, or auto"
 check "max angle auto outside acute" run 2 --max-angle auto --mode nonobtuse "$work/A.poly"
-check "max angle auto outside acute says" stderr_has "--max-angle auto needs --mode acute"
+check "max angle auto outside acute says" stderr_has "--max-angle is a target of --mode acute only, not of --mode nonobtuse"
+# A target alone picks its mode; a mode that does not refine refuses one.
+check "max angle alone means acute" run 0 --max-angle 85 --stats --no-output "$work/A.poly"
+check "max angle alone: acute mode" stdout_has '"mode": "acute"'
+check "max angle alone: bound met" stdout_has '"angleBound": 85,'
+check "min angle alone means quality" run 0 --min-angle 30 --stats --no-output "$work/A.poly"
+check "min angle alone: quality mode" stdout_has '"mode": "quality"'
+check "max area alone means quality" run 0 --max-area 0.5 --stats --no-output "$work/A.poly"
+check "max area alone: quality mode" stdout_has '"mode": "quality"'
+check "min angle with cdt" run 2 --mode cdt --min-angle 30 "$work/A.poly"
+check "min angle with cdt says" stderr_has "--min-angle / --max-area has no effect with --mode cdt"
+check "max angle with delaunay" run 2 --mode delaunay --max-angle 80 "$work/A.poly"
+check "max angle with delaunay says" stderr_has "--max-angle has no effect with --mode delaunay"
+check "max angle with quality" run 2 --mode quality --max-angle 80 "$work/A.poly"
 check "max angle 85" run 0 --mode acute --max-angle 85 --stats --no-output "$work/A.poly"
 check "max angle 85 certified" stdout_has '"certified": true'
 check "max angle 85 bound" stdout_has '"angleBound": 85,'

@@ -270,6 +270,34 @@ TEST(Mesh, TriangleFillWithHolePoint) {
   EXPECT_NEAR(meshArea(holed.mesh), 84, 1e-12);
 }
 
+// A constrained Delaunay triangulation reports the domain's corners as refinement would (a
+// triangle with a 30-degree corner: floor 75), and says that refinement targets given with it
+// do nothing rather than ignore them silently.
+TEST(Mesh, CdtReportsTheFloorAndIgnoredTargets) {
+  Pslg in;
+  const double t = std::tan(30 * M_PI / 180);
+  in.points = {0, 0, 10, 0, 10, 10 * t};
+  in.segments = {0, 1, 1, 2, 2, 0};
+  Options o;
+  o.mode = Mode::Cdt;
+  Result r = mesh(in, o);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+  EXPECT_NEAR(r.stats.smallestDomainAngle, 30, 1e-9);
+  EXPECT_NEAR(r.stats.angleFloor, 75, 1e-9);
+  EXPECT_NEAR(r.stats.smallestInputAngle, 30, 1e-9);
+  EXPECT_TRUE(r.stats.warnings.empty());
+  for (auto set : {+[](Options& x) { x.minAngle = 30; }, +[](Options& x) { x.maxAngle = 80; },
+                   +[](Options& x) { x.maxArea = 1; }}) {
+    Options with = o;
+    set(with);
+    r = mesh(in, with);
+    ASSERT_EQ(r.stats.warnings.size(), 1u);
+    EXPECT_NE(r.stats.warnings[0].find("no effect in mode cdt"), std::string::npos)
+        << r.stats.warnings[0];
+    EXPECT_EQ(r.mesh.triangles.size(), 3u);
+  }
+}
+
 TEST(Mesh, BadInputIsAClearError) {
   struct Case {
     Pslg in;

@@ -194,7 +194,7 @@ export interface MeshStats {
   smallestInputAngle: number;
   /**
    * The domain's smallest corner, measured inside it (degrees; a reflex corner is over 180; 360
-   * when there is none). Refinement modes only.
+   * when there is none). Every mode but delaunay.
    */
   smallestDomainAngle: number;
   /**

@@ -160,9 +160,9 @@ struct Stats {
   // limits meshes.
   double smallestInputAngle = 180;
   // The smallest corner of the domain (degrees), measured inside it (a reflex notch is over
-  // 180), between two input segments or the domain's edges; 360 when there is none. Refinement
-  // modes only. It sets angleFloor = 90 - min(36, smallestDomainAngle) / 2 (Bishop 2021: every
-  // domain has a mesh with every angle at most that). Above 72 it is sharp: a corner of theta
+  // 180), between two input segments or the domain's edges; 360 when there is none. Every
+  // mode but Delaunay. It sets angleFloor = 90 - min(36, smallestDomainAngle) / 2 (Bishop
+  // 2021: every domain has a mesh with every angle at most that). Above 72 it is sharp: a corner of theta
   // forces an angle of at least 90 - theta / 2 in its triangles. At 72 (corners of 36 degrees
   // or more) some domains need 72 and others less (an equilateral triangle: 60); acutemesh does
   // not aim below it.
