@@ -357,8 +357,8 @@ async function run() {
     const options = meshOptions();
     const m = await meshInWorker(pslg, options, {
       signal: controller.signal,
-      // Refinement rarely knows its end (fraction -1): then the bar stays indeterminate and
-      // the growing vertex count shows that work goes on.
+      // Refinement reports an estimated fraction that only grows; a phase that does not know
+      // its end (fraction -1) leaves the bar indeterminate, the vertex count showing work.
       onProgress: (p) => {
         if (running !== controller || !p) return;
         if (p.fraction >= 0) ui.progress.value = Math.min(1, p.fraction);
