@@ -5,6 +5,7 @@ import { spawn } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
 import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { before, after } from 'node:test';
 import { chromium } from 'playwright-core';
 
 export const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -38,6 +39,31 @@ export async function launch() {
   return {
     browser,
     close: () => browser.close(),
+  };
+}
+
+// One test file's server and browser, started before its tests and closed after them:
+// open(query, options) gives a page of the app once its first mesh is shown (within
+// `firstRunTimeout` ms), url(query) and browser() what openPage needs for a page taken earlier.
+export function pageSession({ firstRunTimeout = 20000 } = {}) {
+  let server, browser;
+  before(async () => {
+    server = await startServer();
+    browser = await launch();
+  });
+  after(async () => {
+    await browser?.close();
+    server?.close();
+  });
+  const url = (query = '') => `${server.url}${query}`;
+  return {
+    url,
+    browser: () => browser.browser,
+    async open(query = '', options) {
+      const p = await openPage(browser.browser, url(query), options);
+      await waitForRun(p.page, 1, firstRunTimeout);
+      return p;
+    },
   };
 }
 

@@ -3,28 +3,14 @@
 // controls (WCAG 2.2 AA): axe-core finds nothing, the canvas is named and shows its focus,
 // drawing works from the keyboard, and tap targets are at least 24 px.
 // Run: node --test tests/web/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { join } from 'node:path';
-import { artifacts, startServer, launch, openPage, result, waitForRun, runAndWait, status } from './browser.mjs';
+import { artifacts, pageSession, result, runAndWait, status } from './browser.mjs';
 
-let server, chromium;
-before(async () => {
-  server = await startServer();
-  chromium = await launch();
-});
-after(async () => {
-  await chromium?.close();
-  server?.close();
-});
-
-async function open(query = '', options) {
-  const p = await openPage(chromium.browser, `${server.url}${query}`, options);
-  await waitForRun(p.page, 1);
-  return p;
-}
+const { open } = pageSession();
 
 test('a link with an out-of-range max angle falls back to the default and says so', async () => {
   const { page, errors, context } = await open('?text=Hi&maxAngle=50&mode=acutest');

@@ -1,28 +1,14 @@
 // The page says what happened and shows nothing stale: a target that was not met is said in
 // every mode, an empty mesh is an error, one time figure, and a new input (or an unreadable
 // one) leaves nothing of the previous result on screen. Run: node --test tests/web/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { startServer, launch, openPage, result, waitForRun, runAndWait, status } from './browser.mjs';
+import { pageSession, result, runAndWait, status } from './browser.mjs';
 
-let server, chromium;
-before(async () => {
-  server = await startServer();
-  chromium = await launch();
-});
-after(async () => {
-  await chromium?.close();
-  server?.close();
-});
-
-async function open(query = '', options) {
-  const p = await openPage(chromium.browser, `${server.url}${query}`, options);
-  await waitForRun(p.page, 1);
-  return p;
-}
+const { open } = pageSession();
 
 function tempFile(name, text) {
   const path = join(mkdtempSync(join(tmpdir(), 'acutemesh-web-')), name);

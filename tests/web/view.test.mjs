@@ -2,27 +2,13 @@
 // the main part of the input, and the smaller things a user noticed (the link and a file,
 // missing glyphs, a dropped drawing, the SVG download's colours, the histogram's legend).
 // Run: node --test tests/web/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { root, artifacts, startServer, launch, openPage, waitForRun, result, runAndWait } from './browser.mjs';
+import { root, artifacts, pageSession, openPage, waitForRun, result, runAndWait } from './browser.mjs';
 
-let server, chromium;
-before(async () => {
-  server = await startServer();
-  chromium = await launch();
-});
-after(async () => {
-  await chromium?.close();
-  server?.close();
-});
-
-async function open(query = '', options) {
-  const p = await openPage(chromium.browser, `${server.url}${query}`, options);
-  await waitForRun(p.page, 1, 60000);
-  return p;
-}
+const { open, url, browser } = pageSession({ firstRunTimeout: 60000 });
 
 // After the next two frames: the share of the canvas in the Steiner dots' colour, and the
 // dots drawn as [count, smallest radius, largest radius] in CSS pixels.
@@ -113,7 +99,7 @@ test('a file is not in the link, a missing glyph and a dropped drawing are said'
 
 test('the SVG download is coloured like the view; the histogram\'s grey bars are in the legend; no readback warning', async () => {
   const warnings = [];
-  const p = await openPage(chromium.browser, `${server.url}?text=Hi`);
+  const p = await openPage(browser(), url('?text=Hi'));
   p.page.on('console', (m) => { if (m.type() === 'warning') warnings.push(m.text()); });
   const { page, errors, context } = p;
   await waitForRun(page, 1);
