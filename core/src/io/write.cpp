@@ -59,18 +59,21 @@ void putUint(std::string& s, uint64_t v) {
 size_t pointsBytes(const Mesh& m) { return m.vertexCount() * 48; }
 size_t trianglesBytes(const Mesh& m) { return m.triangleCount() * 40; }
 
+// One numbered point of Triangle's formats: "i x y".
+void putPointLine(std::string& s, size_t i, const double* p) {
+  putUint(s, i);
+  s += ' ';
+  putDouble(s, p[0]);
+  s += ' ';
+  putDouble(s, p[1]);
+  s += '\n';
+}
+
 void putNodeSection(std::string& s, const Mesh& m) {
   const size_t n = m.vertexCount();
   putUint(s, n);
   s += " 2 0 0\n";
-  for (size_t i = 0; i < n; ++i) {
-    putUint(s, i);
-    s += ' ';
-    putDouble(s, m.points[2 * i]);
-    s += ' ';
-    putDouble(s, m.points[2 * i + 1]);
-    s += '\n';
-  }
+  for (size_t i = 0; i < n; ++i) putPointLine(s, i, &m.points[2 * i]);
 }
 
 // Fixed-point with up to 2 decimals, trailing zeros dropped (SVG only: small, not exact).
@@ -243,14 +246,7 @@ std::string formatPoly(const Mesh& m) {
   }
   putUint(s, holes);
   s += '\n';
-  for (size_t i = 0; i < holes; ++i) {
-    putUint(s, i);
-    s += ' ';
-    putDouble(s, outline.holes[2 * i]);
-    s += ' ';
-    putDouble(s, outline.holes[2 * i + 1]);
-    s += '\n';
-  }
+  for (size_t i = 0; i < holes; ++i) putPointLine(s, i, &outline.holes[2 * i]);
   return s;
 }
 
