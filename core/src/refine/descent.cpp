@@ -45,34 +45,22 @@ double triangleMargin(const Target& target, const double* a, const double* b, co
 
 }  // namespace
 
-// The star of v in star_ (no ghost in it), and for a point on a segment its neighbours there
-// in seg_; false for a vertex that does not move (an input vertex, a fan's point while fans
-// stand, a point on a segment with other fixed edges).
+// The star of v in star_ (its triangles but ghosts), and for a point on a segment its
+// neighbours there in seg_; false for a vertex that does not move (RefineState::slideOf).
 bool AngleDescent::gather(uint32_t v) {
   const Triangulation& T = s_.T;
-  const uint8_t role = s_.role[v];
-  const bool onSegment = role == kOnSegment || role == kOnHull;
-  if (!(role == kFree || onSegment) || T.vertexEdge[v] == kNone) return false;
+  if (!s_.slideOf(v, seg_, segment_)) return false;
   star_.clear();
   starInside_.clear();
-  uint32_t fixedSpokes = 0, e0 = T.vertexEdge[v], e = e0;
+  uint32_t e0 = T.vertexEdge[v], e = e0;
   do {
-    // A point on the hull has ghost triangles, outside: its star is the rest (the hull edge
-    // that is the spoke of a ghost triangle still counts).
-    const bool ghost = T.isGhost(e / 3);
-    if (ghost && !onSegment) return false;
-    if (T.isFixed(e) && T.tri[next(e)] != kGhost) {
-      if (!onSegment || fixedSpokes == 2) return false;
-      seg_[fixedSpokes++] = T.tri[next(e)];
-      segment_ = T.segment[e];
-    }
-    if (!ghost) {
+    if (!T.isGhost(e / 3)) {
       star_.push_back(e / 3);
       starInside_.push_back(T.inDomain(e / 3));
     }
     e = T.opp[prev(e)];
   } while (e != e0);
-  return !onSegment || fixedSpokes == 2;
+  return true;
 }
 
 // The margins (triangleMargin) of the star's domain triangles, smallest first, into `out`.
@@ -501,12 +489,12 @@ bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
       if (m.kind == Move::Remove) changed_.push_back(m.what);
       for (uint32_t x : touched_)
         for (int k = 0; k < 3; ++k)
-          if (!s_.T.isFree(x) && s_.T.tri[3 * x + k] != kGhost) changed_.push_back(s_.T.tri[3 * x + k]);
+          if (!s_.T.isFree(x) && s_.T.tri[3 * x + k] != kGhost)
+            changed_.push_back(s_.T.tri[3 * x + k]);
       recording_ = true;
       smoothAround(touched_);
       recording_ = false;
-      const double after =
-          current + violationNearChanges(s_) - violationNearChanges(saved_.back());
+      const double after = current + violationNearChanges(s_) - violationNearChanges(saved_.back());
       if (after < now - 1e-12) {
         now = after;
         saved_.pop_back();
@@ -548,14 +536,18 @@ size_t AngleDescent::repair(int depth) {
   return kept;
 }
 
+// Smoothing and flip passes over the mesh, up to kDescentSweeps, until one changes nothing.
+void AngleDescent::sweeps() {
+  for (int sweep = 0; sweep < kDescentSweeps && !job_.budget.stop(); ++sweep)
+    if (smooth() + flipPass() == 0) break;
+}
+
 // Where the moves stop paying: every point moved at once (joint_smooth.h), then the sweeps;
 // kept if the violation drops by kDescentGain below `least` (which it lowers), else undone.
 bool AngleDescent::unstick(double& least) {
-  if (kJointSteps == 0) return false;
   RefineState before = s_;
   smoothJointly(s_, job_, job_.options.maxAngle - kJointRoom, kJointSteps);
-  for (int sweep = 0; sweep < kDescentSweeps && !job_.budget.stop(); ++sweep)
-    if (smooth() + flipPass() == 0) break;
+  sweeps();
   const double now = violation();
   if (now < least * (1 - kDescentGain)) {
     least = now;
@@ -571,8 +563,7 @@ bool AngleDescent::run(const std::function<void(double)>& onProgress) {
   int depth = 1;
   for (int stale = 0; round_ < kDescentRounds; ++round_) {
     onProgress(double(round_) / kDescentRounds);
-    for (int sweep = 0; sweep < kDescentSweeps && !job_.budget.stop(); ++sweep)
-      if (smooth() + flipPass() == 0) break;
+    sweeps();
     const double now = violation();
     if (now == 0) return true;
     if (job_.budget.stop() || job_.limits->reached(s_.T.vertexCount())) return false;

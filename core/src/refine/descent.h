@@ -62,6 +62,7 @@ class AngleDescent {
   bool insertFree(uint32_t from, const double* x);
   uint32_t worstNear();
   bool fix(uint32_t t, int depth, double& now, double current);
+  void sweeps();
   bool unstick(double& least);
   size_t repair(int depth);
   bool optimise(uint32_t v);

@@ -20,34 +20,22 @@ struct Mover {
   double from[2] = {0, 0}, step[2] = {0, 0};
 };
 
-// Whether v moves, and how (descent.cpp's gather() decides alike for one point).
+// Whether v moves, and how (RefineState::slideOf), with its shortest edge.
 bool moverOf(const RefineState& s, uint32_t v, Mover& m) {
   const Triangulation& T = s.T;
-  const uint8_t role = s.role[v];
-  const bool onSegment = role == kOnSegment || role == kOnHull;
-  if (!(role == kFree || onSegment) || T.vertexEdge[v] == kNone) return false;
+  uint32_t ends[2];
   m = Mover{};
-  m.v = v, m.onLine = onSegment, m.scale2 = INFINITY;
-  int fixedSpokes = 0;
+  if (!s.slideOf(v, ends, m.segment)) return false;
+  m.v = v, m.onLine = ends[0] != kNone, m.scale2 = INFINITY;
+  for (int k = 0; k < 2 && m.onLine; ++k)
+    m.ends[2 * k] = T.point(ends[k])[0], m.ends[2 * k + 1] = T.point(ends[k])[1];
   uint32_t e0 = T.vertexEdge[v], e = e0;
   do {
-    // (A point on the hull has ghost triangles, outside; its hull edges still count.)
-    if (T.isGhost(e / 3) && !onSegment) return false;
-    if (T.tri[next(e)] == kGhost) {
-      e = T.opp[prev(e)];
-      continue;
-    }
-    const double* w = T.point(T.tri[next(e)]);
-    m.scale2 = std::min(m.scale2, dist2(T.point(v), w));
-    if (T.isFixed(e)) {
-      if (!onSegment || fixedSpokes == 2) return false;
-      m.ends[2 * fixedSpokes] = w[0], m.ends[2 * fixedSpokes + 1] = w[1];
-      m.segment = T.segment[e];
-      ++fixedSpokes;
-    }
+    if (T.tri[next(e)] != kGhost)
+      m.scale2 = std::min(m.scale2, dist2(T.point(v), T.point(T.tri[next(e)])));
     e = T.opp[prev(e)];
   } while (e != e0);
-  return !onSegment || fixedSpokes == 2;
+  return true;
 }
 
 // The penalty: the sum over the domain's corners of the squared excess (radians) of the angle

@@ -31,6 +31,24 @@ void RefineState::releaseChords() {
     if (!T.isFree(e / 3) && T.isFixed(e) && !T.isGhost(e / 3) && isChord(e)) T.unfixEdge(e);
 }
 
+bool RefineState::slideOf(uint32_t v, uint32_t ends[2], uint32_t& segment) const {
+  const bool onSegment = role[v] == kOnSegment || role[v] == kOnHull;
+  ends[0] = ends[1] = segment = kNone;
+  if (!(role[v] == kFree || onSegment) || T.vertexEdge[v] == kNone) return false;
+  int fixedSpokes = 0;
+  uint32_t e0 = T.vertexEdge[v], e = e0;
+  do {
+    if (T.isGhost(e / 3) && !onSegment) return false;
+    if (T.isFixed(e) && T.tri[next(e)] != kGhost) {
+      if (!onSegment || fixedSpokes == 2) return false;
+      ends[fixedSpokes++] = T.tri[next(e)];
+      segment = T.segment[e];
+    }
+    e = T.opp[prev(e)];
+  } while (e != e0);
+  return !onSegment || fixedSpokes == 2;
+}
+
 size_t RefineState::liveSteiner(size_t inputVertices) const {
   size_t n = 0;
   for (uint32_t v = uint32_t(inputVertices); v < T.vertexCount(); ++v)

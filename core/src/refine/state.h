@@ -60,6 +60,12 @@ struct RefineState {
   void reserve(size_t vertices);
   // Chords are fixed only while refinement runs; the output knows them as plain edges.
   void releaseChords();
+  // How Steiner point v may move when points are smoothed toward a bound below 90
+  // (descent.h, joint_smooth.h): false if it stands (an input vertex, a fan's point, a free
+  // point with a fixed edge, a segment point with other fixed edges); else `ends` its two
+  // neighbours along its segment and `segment` that segment (kNone on a hull edge), both kNone
+  // for a free point. A point on the hull has ghost triangles: its hull edges still count.
+  bool slideOf(uint32_t v, uint32_t ends[2], uint32_t& segment) const;
   // Steiner points in the mesh (vertexCount() also counts those removed).
   size_t liveSteiner(size_t inputVertices) const;
   // Per vertex: 1 for the Steiner points on no input segment (Mesh::vertexKind kFreeVertex).
