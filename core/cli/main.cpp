@@ -2,8 +2,10 @@
 // asked for. Exit status: 0 ok, 1 target not met (best mesh written), 2 bad input or usage.
 // The command line is read in arguments.cpp, the options completed by the core's input policy
 // (io.h: applyInputPolicy), the files and --stats written in output.cpp.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <new>
 #include <stdexcept>
 #include <unistd.h>
@@ -33,23 +35,53 @@ double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// mesh(), and on a terminal, for runs longer than a second, where it is on one stderr line.
+// What is left of a refinement, from how long its first `fraction` took: "" until the
+// fraction says enough (the first few percent mostly measure the start-up).
+std::string timeLeft(double fraction, double seconds) {
+  if (fraction < 0.05 || seconds < 2) return "";
+  const double left = seconds * (1 - fraction) / fraction;
+  char text[48];
+  if (left < 90)
+    std::snprintf(text, sizeof text, ", about %.0f s left", std::max(1.0, left));
+  else
+    std::snprintf(text, sizeof text, ", about %.0f min left", left / 60);
+  return text;
+}
+
+// mesh(), and on a terminal, for runs longer than a second, where it is on one stderr line:
+// the phase, the vertex count, the share of the refinement done and what is likely left.
 Result meshShowingProgress(const Pslg& pslg, Options options, Clock::time_point t0) {
   bool progressShown = false;
+  double refineStart = -1;  // (seconds since t0)
   if (isatty(fileno(stderr))) {
     options.progress = [&](const Progress& p) {
-      double elapsed = secondsSince(t0);
+      const double elapsed = secondsSince(t0);
+      const bool refining =
+          std::strcmp(p.phase, "refine") == 0 || std::strcmp(p.phase, "improve") == 0;
+      if (refining && refineStart < 0) refineStart = elapsed;
       if (elapsed < 1) return;
-      if (p.vertices)
-        std::fprintf(stderr, "\racutemesh: %-9s %10u vertices %8.1f s", p.phase, p.vertices, elapsed);
-      else
-        std::fprintf(stderr, "\racutemesh: %-9s %19s %8.1f s", p.phase, "", elapsed);
+      std::string line = "acutemesh: " + std::string(p.phase);
+      line.resize(std::max<size_t>(line.size(), 20), ' ');
+      char figures[64];
+      // (Not while improving: the count then includes the points taken out.)
+      if (p.vertices && std::strcmp(p.phase, "improve") != 0) {
+        std::snprintf(figures, sizeof figures, "%10u vertices", p.vertices);
+        line += figures;
+      }
+      if (refining && p.fraction >= 0) {
+        std::snprintf(figures, sizeof figures, " %3.0f%%", 100 * p.fraction);
+        line += figures;
+      }
+      std::snprintf(figures, sizeof figures, " %8.1f s", elapsed);
+      line += figures;
+      if (refining) line += timeLeft(p.fraction, elapsed - refineStart);
+      std::fprintf(stderr, "\r%-78s", line.c_str());
       std::fflush(stderr);
       progressShown = true;
     };
   }
   Result r = mesh(pslg, options);
-  if (progressShown) std::fprintf(stderr, "\r%60s\r", "");
+  if (progressShown) std::fprintf(stderr, "\r%78s\r", "");
   return r;
 }
 

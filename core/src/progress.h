@@ -56,6 +56,8 @@ class ProgressRelay {
     if (!mine()) return;
     if (std::chrono::duration<double>(Clock::now() - sent_).count() >= kProgressInterval) send();
   }
+  // The share of the whole refinement done so far (as last noted).
+  double done() const { return floor_; }
   // The part [from, to] of the whole refinement that the fractions noted next stand for
   // (outermost level only).
   void span(double from, double to) {

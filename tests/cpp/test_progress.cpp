@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "acutemesh/acutemesh.h"
+#include "acutemesh/vocabulary.h"
+#include "fixtures.h"
 
 using namespace acutemesh;
 
@@ -47,6 +49,41 @@ Pslg gear() {
   for (uint32_t k = 0; k < uint32_t(hole); ++k)
     in.segments.insert(in.segments.end(), {outer + k, outer + (k + 1) % hole});
   in.holes = {0, 0};
+  return in;
+}
+
+// A coastline: a 16-gon whose edges are split again and again at points pushed off their
+// middles (a fixed seed), 8,192 vertices, with two lakes; even-odd fill.
+Pslg coastline() {
+  std::mt19937_64 rng(25);
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto ring = [&](double cx, double cy, double radius, int corners, int levels) {
+    std::vector<double> xy;
+    for (int i = 0; i < corners; ++i) {
+      const double a = 2 * M_PI * i / corners;
+      xy.insert(xy.end(), {cx + radius * std::cos(a), cy + radius * std::sin(a)});
+    }
+    for (int level = 0; level < levels; ++level) {
+      std::vector<double> finer;
+      const size_t n = xy.size() / 2;
+      for (size_t i = 0; i < n; ++i) {
+        const double *p = &xy[2 * i], *q = &xy[2 * ((i + 1) % n)];
+        const double off = 0.12 * u(rng);  // (of the edge's length, along its normal)
+        finer.insert(finer.end(), {p[0], p[1], (p[0] + q[0]) / 2 - off * (q[1] - p[1]),
+                                   (p[1] + q[1]) / 2 + off * (q[0] - p[0])});
+      }
+      xy = std::move(finer);
+    }
+    return xy;
+  };
+  Pslg in;
+  for (const std::vector<double>& xy : {ring(0, 0, 100, 16, 9), ring(-30, 10, 12, 8, 5),
+                                        ring(35, -20, 8, 8, 5)}) {
+    const uint32_t first = uint32_t(in.points.size() / 2), n = uint32_t(xy.size() / 2);
+    in.points.insert(in.points.end(), xy.begin(), xy.end());
+    for (uint32_t k = 0; k < n; ++k)
+      in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
+  }
   return in;
 }
 
@@ -150,4 +187,63 @@ TEST(Progress, FractionMovesBelow90) {
   RecordProperty("seconds", std::to_string(seconds));
   EXPECT_LT(still, std::max(0.5, seconds / 4)) << "the fraction stood still for " << still
                                                << " s of " << seconds << " s";
+}
+
+// A large input (a generated coastline, the kind of outline maps bring) in both certified
+// modes: every mesh valid and certified; the fraction moves steadily enough to tell what is
+// left: it never stands still for long (the first queue's weighing, the strategies' runs, the
+// polish's rounds and their halves all move it) and is neither near 0 nor near 1 halfway
+// through; a cancel from the callback midway lands soon with a valid mesh.
+TEST(Progress, LargeCoastlineMovesSteadilyAndCancels) {
+  const Pslg in = coastline();
+  for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
+    Options o;
+    o.mode = mode;
+    o.fill = FillRule::EvenOdd;
+    std::vector<Report> reports;
+    const Clock::time_point start = Clock::now();
+    o.progress = [&](const Progress& p) { reports.push_back({since(start), p.phase, p.fraction}); };
+    const Result r = mesh(in, o);
+    const double seconds = since(start);
+    ASSERT_EQ(r.status, Status::Ok) << r.message;
+    EXPECT_TRUE(r.stats.certified);
+    EXPECT_EQ(fixtures::validationErrors(in, o, r.mesh), "");
+    EXPECT_GT(r.mesh.triangleCount(), 8192u);
+    double stillSince = 0, still = 0, last = -1, refineFrom = -1;
+    for (const Report& p : reports) {
+      if (!refining(p.phase.c_str())) continue;
+      if (refineFrom < 0) refineFrom = stillSince = p.at;
+      EXPECT_GE(p.fraction, last) << p.phase << " at " << p.at;
+      if (p.fraction > last) stillSince = p.at, last = p.fraction;
+      still = std::max(still, p.at - stillSince);
+    }
+    ASSERT_GE(refineFrom, 0) << "no refinement report";
+    const double span = seconds - refineFrom;
+    double halfway = 0;  // the fraction halfway through the refinement
+    for (const Report& p : reports)
+      if (refining(p.phase.c_str()) && p.at <= refineFrom + span / 2) halfway = p.fraction;
+    RecordProperty(std::string(nameOf(mode)) + "_seconds", std::to_string(seconds));
+    EXPECT_LT(still, std::max(0.3, span / 10))
+        << nameOf(mode) << ": the fraction stood still for " << still << " s of " << span;
+    EXPECT_GT(halfway, 0.15) << nameOf(mode) << " (" << span << " s)";
+    EXPECT_LT(halfway, 0.85) << nameOf(mode) << " (" << span << " s)";
+
+    // The same run cancelled from the callback once half its time has passed.
+    double asked = -1;
+    Options c = o;
+    std::atomic<bool> cancel{false};
+    c.cancel = &cancel;
+    const Clock::time_point again = Clock::now();
+    c.progress = [&](const Progress&) {
+      if (asked < 0 && since(again) >= seconds / 2) asked = since(again), cancel = true;
+    };
+    const Result cut = mesh(in, c);
+    const double ended = since(again);
+    ASSERT_GE(asked, 0) << nameOf(mode) << ": ended after " << ended << " s, before the cancel";
+    EXPECT_EQ(cut.status, Status::Cancelled) << cut.message;
+    EXPECT_LT(ended - asked, 0.5) << nameOf(mode) << ": asked at " << asked << " s";
+    Options plain = o;
+    plain.mode = Mode::Cdt;  // (a cancelled mesh meets no angle target: check it as a CDT's)
+    EXPECT_EQ(fixtures::validationErrors(in, plain, cut.mesh), "") << nameOf(mode);
+  }
 }

@@ -133,7 +133,11 @@ void CornerFans::buildAll() {
     if (double r = radiusFor(v, job_.strategy.lazyFans))
       centres.push_back({v, r, smallestSector(), 0});  // (the star radiusFor read)
   if (job_.strategy.wideFans) widen(centres);
-  for (const FanCentre& c : centres) build(c.vertex, c.radius);
+  for (size_t i = 0; i < centres.size(); ++i) {
+    // (A cancel or the time limit: the fans built so far stay, the repairs stop at once.)
+    if ((i & 63) == 63 && job_.budget.stop()) return;
+    build(centres[i].vertex, centres[i].radius);
+  }
 }
 
 // Wide fans (Strategy::wideFans). Strict acute triangles in a wedge of angle a between two

@@ -33,9 +33,12 @@ struct RunLimits {
   }
 };
 
-// A run's progress (ProgressRelay::note): its repairs up to this fraction, then the removal
-// of the points not needed.
+// A run's progress (Refiner::run's parts of its span): its repairs up to this fraction, then
+// the removal of the points not needed.
 constexpr double kRepairShare = 0.7;
+// A repair's progress: its first queue's share when each entry is weighed (the fewest-bad-first
+// order), measured on generated coastlines.
+constexpr double kWeighedQueueShare = 0.15;
 
 struct Job {
   const Pslg& input;
@@ -56,6 +59,8 @@ struct Job {
   void pollProgress() const {
     if (reportsProgress() && budget.progress()) budget.progress()->poll();
   }
+  // The relay this run's steps note progress to (nullptr when it does not report).
+  ProgressRelay* progressRelay() const { return reportsProgress() ? budget.progress() : nullptr; }
 };
 
 }  // namespace acutemesh::detail

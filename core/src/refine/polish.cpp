@@ -1,12 +1,23 @@
 #include "polish.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "refiner.h"
 #include "threads.h"
 
 namespace acutemesh::detail {
+
+namespace {
+// Progress within a round: where each of its steps ends, as a share of the round's time
+// (measured on country outlines of 10^4 to 10^5 vertices, where a round takes seconds).
+constexpr double kRoundSteps[] = {0.05, 0.1, 0.35, 0.4, 1};            // round(false)
+constexpr double kLargerRoundSteps[] = {0.07, 0.27, 0.33, 0.79, 0.84, 1};  // round(true)
+constexpr double kCallersHalf = 0.75, kReplayed = 0.83, kAlongRemoved = 0.86;  // in halves
+}  // namespace
 
 void Polish::run() {
   const Target& target = job_.target;
@@ -46,20 +57,26 @@ void Polish::run() {
 // merge changes the stars around it and removals, several times cheaper a success than
 // merges, find more there.
 void Polish::round(bool removeAfterMerging) {
+  size_t step = 0;
+  auto part = [&](const double* ends) {
+    const double from = step ? ends[step - 1] : 0, to = ends[step];
+    ++step;
+    return ProgressRelay::Part(job_.progressRelay(), from, to);
+  };
   if (!removeAfterMerging) {
-    smooth();
-    smooth();
-    reduce_.removeSteinerPoints();
-    smooth();
-    reduce_.mergeSteinerPoints(nullptr, 2);
+    { const auto p = part(kRoundSteps); smooth(); }
+    { const auto p = part(kRoundSteps); smooth(); }
+    { const auto p = part(kRoundSteps); reduce_.removeSteinerPoints(); }
+    { const auto p = part(kRoundSteps); smooth(); }
+    { const auto p = part(kRoundSteps); reduce_.mergeSteinerPoints(nullptr, 2); }
     return;
   }
-  smooth();
-  reduce_.removeSteinerPoints();
-  smooth();
-  reduce_.mergeSteinerPoints();
-  smooth();
-  reduce_.removeSteinerPoints();
+  { const auto p = part(kLargerRoundSteps); smooth(); }
+  { const auto p = part(kLargerRoundSteps); reduce_.removeSteinerPoints(); }
+  { const auto p = part(kLargerRoundSteps); smooth(); }
+  { const auto p = part(kLargerRoundSteps); reduce_.mergeSteinerPoints(); }
+  { const auto p = part(kLargerRoundSteps); smooth(); }
+  { const auto p = part(kLargerRoundSteps); reduce_.removeSteinerPoints(); }
 }
 
 // Moves every free vertex to the middle of the room its link leaves, and every segment vertex
@@ -67,8 +84,13 @@ void Polish::round(bool removeAfterMerging) {
 // the next removal pass.
 void Polish::smooth() {
   const Scope& scope = reduce_.scope;
+  ProgressRelay* relay = job_.progressRelay();
+  const uint32_t count = s_.T.vertexCount();
   for (uint32_t v = uint32_t(job_.input.vertexCount()); v < s_.T.vertexCount(); ++v) {
-    if ((v & 255) == 0) job_.pollProgress();
+    if ((v & 255) == 0 && relay) {
+      relay->note("improve", double(v) / double(count), count);
+      relay->poll();
+    }
     if (s_.T.vertexEdge[v] == kNone || (s_.role[v] != kFree && s_.role[v] != kOnSegment) ||
         !scope.owns(v))
       continue;
@@ -121,23 +143,43 @@ void Polish::roundInHalves(int r) {
   other.reduce().scope = {&mine[1], &log};
   reduce_.scope = {&mine[0], nullptr};
   auto secondHalf = [&] { other.polisher().round(true); };
+  {
+    const ProgressRelay::Part half(job_.progressRelay(), 0, kCallersHalf);
 #ifdef ACUTEMESH_THREADS
-  if (threadsFor(job_.options) > 1) {
-    std::thread helper(secondHalf);
-    round(true);
-    helper.join();
-  } else {
+    if (threadsFor(job_.options) > 1) {
+      std::atomic<bool> done{false};
+      std::thread helper([&] {
+        secondHalf();
+        done = true;
+      });
+      round(true);
+      // (Progress goes on being sent while the other half finishes: a cancel from the
+      // callback lands in time; that half polls the budget itself.)
+      while (!done) {
+        job_.pollProgress();
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      }
+      helper.join();
+    } else {
+      round(true);
+      secondHalf();
+    }
+#else
     round(true);
     secondHalf();
-  }
-#else
-  round(true);
-  secondHalf();
 #endif
+  }
   reduce_.scope = {};
-  replay(log, n, copy.T.vertexCount());
+  {
+    const ProgressRelay::Part part(job_.progressRelay(), kCallersHalf, kReplayed);
+    replay(log, n, copy.T.vertexCount());
+  }
   along.resize(T.vertexCount(), 1);  // and the points the merges made
-  reduce_.removeSteinerPoints(&along, 1);
+  {
+    const ProgressRelay::Part part(job_.progressRelay(), kReplayed, kAlongRemoved);
+    reduce_.removeSteinerPoints(&along, 1);
+  }
+  const ProgressRelay::Part part(job_.progressRelay(), kAlongRemoved, 1);
   reduce_.mergeSteinerPoints(&along);
 }
 
@@ -147,7 +189,14 @@ void Polish::roundInHalves(int r) {
 void Polish::replay(const std::vector<Step>& log, uint32_t firstNew, uint32_t made) {
   std::vector<uint32_t> here(made, kNone);
   for (uint32_t v = 0; v < firstNew; ++v) here[v] = v;
-  for (const Step& step : log) {
+  ProgressRelay* relay = job_.progressRelay();
+  for (size_t i = 0; i < log.size(); ++i) {
+    const Step& step = log[i];
+    // (Made even after a cancel: they are the other half's work, done already.)
+    if ((i & 63) == 0 && relay) {
+      relay->note("improve", double(i) / double(log.size()), s_.T.vertexCount());
+      relay->poll();
+    }
     const uint32_t a = here[step.u];
     if (a == kNone || s_.T.vertexEdge[a] == kNone) continue;
     if (step.kind == Step::Move) {

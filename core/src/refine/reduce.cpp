@@ -242,8 +242,7 @@ void Reduce::markChanged() {
 bool Reduce::shouldStop(double done) {
   if ((++attempts_ & 63) != 0) return false;
   if (job_.reportsProgress() && job_.budget.progress())
-    job_.budget.progress()->note("improve", kRepairShare + (1 - kRepairShare) * done,
-                                 s_.T.vertexCount());
+    job_.budget.progress()->note("improve", done, s_.T.vertexCount());
   return job_.budget.stop();
 }
 

@@ -6,7 +6,12 @@ StepResult Refiner::run() {
   const Target& target = job_.target;
   if (target.nonObtuse && job_.strategy.cutAtFeetFirst) boundary_.cutAtFeet();
   if (target.boundsLargest()) fans_.buildAll();
-  StepResult result = repair_.repairAll();
+  StepResult result;
+  {
+    const ProgressRelay::Part repairs(job_.progressRelay(), 0, kRepairShare);
+    result = repair_.repairAll();
+  }
+  const ProgressRelay::Part removals(job_.progressRelay(), kRepairShare, 1);
   // Acute and non-obtuse, where the point count is the score: remove what is not needed. The
   // fans have done their work once the target is met: their points may go too, as long as
   // what fills their place meets the target. Putting a vertex back can differ from its old

@@ -104,24 +104,29 @@ StepResult Repair::repairAll() {
     Corner c = target.worstCorner(s_, t);
     if (c.k >= 0) queue.push({byGain ? repairGain(t, c) : 0, shortestEdge2(T, t), t});
   };
-  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
-    if ((t & 255) == 0) job_.pollProgress();
+  const auto stopped = [&]() -> StepResult {
+    return {job_.budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
+            "time limit reached before every triangle met the target"};
+  };
+  // Progress: the first queue's share (weighing every bad triangle's repair takes a while),
+  // then the share of the entries popped among those popped and still queued.
+  ProgressRelay* relay = job_.progressRelay();
+  const double pushed = byGain ? kWeighedQueueShare : 0;
+  for (uint32_t t = 0, slots = T.triangleSlots(); t < slots; ++t) {
+    if ((t & 255) == 0) {
+      if (relay) relay->note("refine", pushed * t / slots, T.vertexCount());
+      if (job_.budget.stop()) return stopped();
+    }
     push(t);
   }
   uint32_t steps = 0;
-  size_t mostQueued = 1;  // (progress: the share of the most bad triangles queued now gone)
   RepairQueue::Entry entry;
   while (queue.pop(entry)) {
     if ((++steps & 255) == 0) {
-      if (job_.reportsProgress() && job_.budget.progress()) {
-        mostQueued = std::max(mostQueued, queue.size());
-        job_.budget.progress()->note(
-            "refine", kRepairShare * (1 - double(queue.size()) / double(mostQueued)),
-            T.vertexCount());
-      }
-      if (job_.budget.stop())
-        return {job_.budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
-                "time limit reached before every triangle met the target"};
+      if (relay)
+        relay->note("refine", pushed + (1 - pushed) * steps / double(steps + queue.size()),
+                    T.vertexCount());
+      if (job_.budget.stop()) return stopped();
     }
     if (job_.limits->reached(T.vertexCount()))
       return {Status::TargetNotMet,
