@@ -66,7 +66,7 @@ for c in "${CASES[@]}"; do
   if [[ ! -s "$file" ]]; then
     note "generating $file (gmt coast -E$code -M)"
     (cd "$WORK" && gmt coast -E"$code" -M >"$id.gmt.txt")  # in WORK: gmt leaves a gmt.history there
-    node bench/inputs/countries.mjs "$WORK/$id.gmt.txt" "$file.tmp" >/dev/null
+    note "$id: $(node bench/inputs/countries.mjs "$WORK/$id.gmt.txt" "$file.tmp")"
     mv "$file.tmp" "$file"
     rm -f "$WORK/$id.gmt.txt"
   fi

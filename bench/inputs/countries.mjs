@@ -4,8 +4,9 @@
 //
 //   node bench/inputs/countries.mjs GMT.txt OUT.json
 //
-// Prints "rings=N vertices=V" (after dropping each closing point). Coordinates are copied as
-// GMT printed them (lon/lat degrees, meshed as plane coordinates).
+// Prints "rings=N vertices=V degenerate=D" (after dropping each closing point; D rings on fewer
+// than 3 distinct points left out). Coordinates are copied as GMT printed them (lon/lat
+// degrees, meshed as plane coordinates).
 import { readFileSync, writeFileSync } from 'node:fs';
 
 const [src, out] = process.argv.slice(2);
@@ -17,12 +18,15 @@ if (!src || !out) {
 const JSON_NUMBER = /^-?(0|[1-9]\d*)(\.\d+)?([eE][+-]?\d+)?$/;
 const rings = [];
 let ring = null;
+let degenerate = 0;
 const close = () => {
-  if (!ring) return;
+  if (!ring?.length) return;
   const [first, last] = [ring[0], ring[ring.length - 1]];
   if (ring.length > 1 && first[0] === last[0] && first[1] === last[1]) ring.pop();
-  if (ring.length >= 3) rings.push(ring);
-  else if (ring.length) console.error(`countries: ring ${rings.length + 1} has ${ring.length} points; left out`);
+  // A ring on fewer than 3 distinct points encloses nothing (DCW has a few, e.g. one point
+  // three times); acutemesh rejects it, so it is left out.
+  if (new Set(ring.map(([x, y]) => `${x} ${y}`)).size >= 3) rings.push(ring);
+  else ++degenerate;
   ring = null;
 };
 const lines = readFileSync(src, 'utf8').split('\n');
@@ -47,4 +51,4 @@ const vertices = rings.reduce((n, r) => n + r.length, 0);
 // One ring per line, the numbers as GMT wrote them.
 const body = rings.map((r) => `[${r.map(([x, y]) => `[${x},${y}]`).join(',')}]`).join(',\n');
 writeFileSync(out, `{"rings": [\n${body}\n]}\n`);
-console.log(`rings=${rings.length} vertices=${vertices}`);
+console.log(`rings=${rings.length} vertices=${vertices} degenerate=${degenerate}`);

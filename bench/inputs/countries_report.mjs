@@ -55,11 +55,16 @@ function measure(id, mode, n) {
   const load = (readText(path.join(runDir, `${id}.${mode}.load`)) || '?').trim();
   return { ...best, rssKb: rss, n: runs.length, load };
 }
+// Input vertices once the duplicates are merged (DCW repeats many points: a third of Canada's).
+const distinct = (s) => s.inputVertices - (s.duplicates || 0);
 const totalSeconds = (s) => (typeof s?.seconds === 'number' ? s.seconds : s?.seconds?.total);
 
 // --- formatting --------------------------------------------------------------------------------
 const fmtInt = (v) => (typeof v === 'number' && Number.isFinite(v) ? Math.round(v).toLocaleString('en-US') : '—');
 const fmtS = (s) => (typeof s !== 'number' ? '—' : s < 1 ? s.toFixed(3) : s < 100 ? s.toFixed(2) : s.toFixed(0));
+// "Norway (fjords)" with code NO: "Norway (NO, fjords)".
+const inputLabel = (c) => { const m = c.label.match(/^(.*) \((.*)\)$/); return m ? `${m[1]} (${c.code}, ${m[2]})` : `${c.label} (${c.code})`; };
+const fmtDeg = (v) => (typeof v !== 'number' ? '—' : v >= 0.01 || v === 0 ? `${v.toFixed(2)}°` : `${v.toExponential(1)}°`);
 const fmtMb = (kb) => (kb ? (kb / 1024).toFixed(kb < 102400 ? 1 : 0) : '—');
 const firstLine = (t) => (t || '').split('\n').find((l) => !/warning:/.test(l))?.replace(/\|/g, '\\|').slice(0, 160) ?? '';
 const cutByLimit = (r) => /time limit/i.test(r.err || '') || /time limit/i.test(r.stats?.message || '');
@@ -75,7 +80,7 @@ function result(mode, r, limit) {
   parts.push(s.targetMet ? 'targetMet' : 'targetMet false');
   let text = parts.join(', ');
   if (mode === 'cdt') text += ` (${fmtInt(s.obtuse)} obtuse)`;
-  if (mode === 'quality') text += ` (min angle ${s.minAngle?.toFixed(2)}°)`;
+  if (mode === 'quality') text += ` (min angle ${fmtDeg(s.minAngle)}; smallest input angle ${fmtDeg(s.smallestInputAngle)})`;
   if (s.targetMet === false || r.rc !== 0) {
     const left = mode === 'acute' ? `${fmtInt(s.nonAcute)} non-acute left` : mode === 'nonobtuse' ? `${fmtInt(s.obtuse)} obtuse left` : '';
     text = `${cutByLimit(r) ? `**cut** at ${limit} s` : `**exit ${r.rc}**: ${firstLine(r.err).replace(/^acutemesh: /, '')}`}` +
@@ -86,7 +91,7 @@ function result(mode, r, limit) {
 
 // --- the table ---------------------------------------------------------------------------------
 const table = [
-  '| input | input vertices | mode | load | wall s | CLI s | triangles | triangles/s | peak RSS MB | bytes/triangle | Steiner / input vertex | result | warnings | WASM (Node) s |',
+  '| input | input vertices (distinct) | mode | load | wall s | CLI s | triangles | triangles/s | peak RSS MB | bytes/triangle | Steiner / input vertex | result | warnings | WASM (Node) s |',
   '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---|',
 ];
 const figures = []; // { c, mode, s, wall, tps, bpt, r }
@@ -99,7 +104,7 @@ for (const c of cases) {
     const total = totalSeconds(s);
     const tps = s && total ? s.triangles / total : null;
     const bpt = s && r.rssKb && s.triangles ? (r.rssKb * 1024) / s.triangles : null;
-    const spv = s && s.inputVertices ? (s.steiner ?? s.vertices - s.inputVertices) / s.inputVertices : null;
+    const spv = s && distinct(s) ? (s.steiner ?? s.vertices - s.inputVertices) / distinct(s) : null;
     if (s && !warningsOf[c.id]) warningsOf[c.id] = s.warnings || [];
     figures.push({ c, mode, s, wall: r?.wallMs ? r.wallMs / 1000 : null, tps, bpt, r });
     let wasmCell = '';
@@ -114,8 +119,8 @@ for (const c of cases) {
         if (ws && s && ws.triangles !== s.triangles) wasmCell += `, ${fmtInt(ws.triangles)} triangles`;
       }
     }
-    const label = first ? `${c.label} (${c.code})` : '';
-    const nv = first && s ? fmtInt(s.inputVertices) : '';
+    const label = first ? inputLabel(c) : '';
+    const nv = first && s ? `${fmtInt(s.inputVertices)} (${fmtInt(distinct(s))})` : '';
     first = false;
     const runs = c.runs > 1 ? ` (best of ${r?.n ?? 0})` : '';
     table.push(`| ${label} | ${nv} | ${mode} | ${r?.load ?? '—'} | ${fmtS(r?.wallMs ? r.wallMs / 1000 : null)}${runs} | ${fmtS(total)} | ` +
@@ -126,7 +131,7 @@ for (const c of cases) {
 
 // --- the targets -------------------------------------------------------------------------------
 const refined = figures.filter((f) => (f.mode === 'acute' || f.mode === 'nonobtuse') && f.s);
-const big = refined.filter((f) => f.s.inputVertices >= TARGET.bigVertices);
+const big = refined.filter((f) => distinct(f.s) >= TARGET.bigVertices);
 const okRun = (f) => f.r.rc === 0 && f.s.certified;
 const name = (f) => `${f.c.code} ${f.mode}`;
 const say = (met) => (met ? '**met**' : '**not met**');
@@ -136,16 +141,17 @@ if (!big.length) {
 } else {
   const tputMet = big.every((f) => okRun(f) && f.tps >= TARGET.throughput);
   targets.push(`- At least ${fmtInt(TARGET.throughput)} triangles/s, acute and non-obtuse, at >= 10^5 input vertices: ${say(tputMet)} ` +
-    `(${big.map((f) => `${name(f)} ${fmtInt(f.tps)}${okRun(f) ? '' : ', not certified'}`).join('; ')}).`);
+    `(${big.map((f) => `${name(f)} ${fmtInt(f.tps)}${okRun(f) ? '' : ', not certified'}`).join('; ')}; ` +
+    `smaller inputs: ${refined.filter((f) => !big.includes(f)).map((f) => `${name(f)} ${fmtInt(f.tps)}`).join(', ')}).`);
   const memMet = big.every((f) => f.bpt !== null && f.bpt <= TARGET.bytesPerTriangle);
   targets.push(`- At most ${TARGET.bytesPerTriangle} bytes of peak memory per output triangle (acute and non-obtuse, >= 10^5 input vertices): ${say(memMet)} ` +
     `(${big.map((f) => `${name(f)} ${f.bpt === null ? '—' : f.bpt.toFixed(0)}`).join('; ')}; ` +
     `smaller inputs: ${refined.filter((f) => !big.includes(f)).map((f) => `${name(f)} ${f.bpt === null ? '—' : f.bpt.toFixed(0)}`).join(', ')}).`);
 }
-const coast = figures.find((f) => f.mode === 'acute' && f.s && f.s.inputVertices >= 1e6);
+const coast = figures.find((f) => f.mode === 'acute' && f.s && distinct(f.s) >= 1e6);
 if (coast) {
   targets.push(`- A 10^6-vertex coastline acute, certified, in under ${TARGET.coastlineSeconds} s natively: ${say(okRun(coast) && coast.wall < TARGET.coastlineSeconds)} ` +
-    `(${coast.c.label}, ${fmtInt(coast.s.inputVertices)} vertices: ${fmtS(coast.wall)} s wall, ${coast.s.certified ? 'certified' : 'not certified'}).`);
+    `(${coast.c.label}, ${fmtInt(distinct(coast.s))} distinct vertices: ${fmtS(coast.wall)} s wall, ${coast.s.certified ? 'certified' : 'not certified'}).`);
   const w = figures.find((f) => f.mode === 'wasm-acute' && f.c === coast.c);
   targets.push(`- The same in under a minute in Node (WASM): ${w && w.s ? `${say(w.r.rc === 0 && w.s.certified && w.wall < TARGET.wasmSeconds)} (${fmtS(w.wall)} s)` : 'not measured'}.`);
 } else {
@@ -163,9 +169,20 @@ const today = new Date().toISOString().slice(0, 10);
 const limits = cases.map((c) => `${c.code} ${c.limit} s`).join(', ');
 const runsText = cases.map((c) => `${c.code} ${c.runs}`).join(', ');
 
+// The CLI's warnings with their FILE:LINE and segment numbers taken out, alike ones counted once
+// (the per-segment lines are summed up by a count line of their own).
+function warningSummary(ws) {
+  const count = new Map();
+  for (const w of ws) {
+    if (/^segment \d+ has zero length/.test(w)) continue;
+    const m = w.replace(/^[^ ]*:\d+: /, '');
+    count.set(m, (count.get(m) || 0) + 1);
+  }
+  return [...count].map(([m, n]) => (n > 1 ? `${m} (${n} listed)` : m)).join('; ');
+}
 const warnLines = cases
   .filter((c) => warningsOf[c.id]?.length)
-  .map((c) => `  - ${c.code}: ${warningsOf[c.id].filter((w) => !/^segment \d+ has zero length/.test(w)).join('; ')}`);
+  .map((c) => `  - ${c.code}: ${warningSummary(warningsOf[c.id])}`);
 
 const lines = [
   `# Whole countries: CDT, quality, acute and non-obtuse at 10^4 to 10^6 vertices (${today})`,
@@ -188,9 +205,12 @@ const lines = [
     `each under GNU time; L: ${limits}; runs per mode: ${runsText}. "wall s": the process's wall time, best of the runs; "CLI s": ` +
     'that run\'s `seconds.total` from `--stats` (read, mesh, figures). triangles/s: output triangles / CLI s. Peak RSS: GNU time\'s ' +
     '%M, the largest over the runs; bytes/triangle: peak RSS / output triangles (includes the parsed input and the process). ' +
-    'Steiner / input vertex: `steiner` / `inputVertices`. warnings: entries of `--stats` `warnings` (the CLI lists the first few of a kind, then a count).',
+    'input vertices: `inputVertices`, and in brackets without the `duplicates` the CLI merged (the figure issue 25 quotes); ' +
+    'Steiner / input vertex: `steiner` / distinct input vertices. warnings: entries of `--stats` `warnings` (the CLI lists the first few of a kind, then a count).',
   '- result: `status`, `certified` (acute and non-obtuse: every angle checked exactly), `targetMet`; "cut": the run reached its ' +
     '--time-limit and gave back its mesh so far (exit 1); "killed": it ran past twice the limit + 60 s.',
+  '- Quality refinement cannot reach 20° next to an input angle below 20° (Norway\'s and Indonesia\'s coasts have them: ' +
+    '"smallest input angle"); it ends with those triangles left, `target-not-met`, exit 1 (as Lake Superior in the refine reports).',
   '- WASM (Node): acute through the npm package (dist/, `am.parseJson` + `am.mesh(pslg, { mode: \'acute\', timeLimit: L })`, ' +
     'one run, timed in JS; bench/inputs/countries_wasm.mjs). WebAssembly runs the strategies one after another (no threads).',
   `- Inputs: \`gmt coast -E<ISO code> -M\` (GMT ${pkg('gmt')}, DCW polygons gmt-dcw ${pkg('gmt-dcw')}, gmt-gshhg-full ${pkg('gmt-gshhg-full')}), ` +
