@@ -14,6 +14,7 @@
 #include "angle_bound.h"
 #include "build.h"
 #include "domain_angles.h"
+#include "parts.h"
 #include "portable_math.h"
 
 namespace acutemesh {
@@ -113,23 +114,25 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
 // Smallest and largest angle in floating point (via cosines: the smallest angle is opposite
 // the shortest edge, the largest opposite the longest), and the exact count of triangles with
 // a right or obtuse corner (dot-product signs).
-// Runs on the store (vertices in insertion order) rather than on the output, whose input
-// numbering scatters neighbours across memory.
+// Runs on the store (vertices in insertion order) where there is one, rather than on the
+// output, whose input numbering scatters neighbours across memory: `slots` triangles of
+// `tri` over `points` (x, y per vertex), those `inside` says (every one without it).
 // Also returns the largest triangle area (floating point, as refinement measures it).
 // Triangles at a vertex in `exact` are counted with its exact position.
-double measureAngles(const Triangulation& T, const std::vector<uint8_t>& inside,
+double measureAngles(const std::vector<double>& points, const std::vector<uint32_t>& tri,
+                     uint32_t slots, const std::vector<uint8_t>* inside,
                      const std::vector<detail::ExactVertex>& exact, Stats& stats) {
   double cosSmallest = -1, cosLargest = 1;  // of the smallest and the largest angle seen
   double largestArea = 0;
   uint32_t nonAcute = 0, obtuse = 0, count = 0;
-  std::vector<const detail::RationalPoint*> exactAt(exact.empty() ? 0 : T.vertexCount(), nullptr);
+  std::vector<const detail::RationalPoint*> exactAt(exact.empty() ? 0 : points.size() / 2, nullptr);
   for (const detail::ExactVertex& x : exact) exactAt[x.vertex] = &x.at;
-  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
-    if (!inside[t]) continue;
+  for (uint32_t t = 0; t < slots; ++t) {
+    if (inside && !(*inside)[t]) continue;
     ++count;
-    const uint32_t* v = &T.tri[3 * t];
+    const uint32_t* v = &tri[3 * size_t(t)];
     const double* p[3];
-    for (int k = 0; k < 3; ++k) p[k] = T.point(v[k]);
+    for (int k = 0; k < 3; ++k) p[k] = &points[2 * size_t(v[k])];
     double len2[3];  // squared length of the edge opposite corner k
     bool right = false, blunt = false;
     const bool atExact = !exactAt.empty() && (exactAt[v[0]] || exactAt[v[1]] || exactAt[v[2]]);
@@ -489,7 +492,11 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   return {};
 }
 
-Result meshInRange(const Pslg& input, const Options& asked) {
+}  // namespace
+
+namespace detail {
+
+Result meshInRange(const Pslg& input, const Options& asked, bool byParts) {
   Result result;
   Stats& stats = result.stats;
   // The steps report through the relay (progress.h), which the budget's polls let report too.
@@ -543,9 +550,13 @@ Result meshInRange(const Pslg& input, const Options& asked) {
     stats.warnings.push_back(std::string("minAngle, maxAngle and maxArea have no effect in mode ") +
                              nameOf(options.mode) +
                              ", which does not refine (modes quality, nonobtuse, acute do)");
-  if (refining) {
+  if (belowFloor) target.maxAngle = kAutoMaxAngle;
+  const bool inParts = refining && byParts &&
+                       detail::meshByParts(T, inside, input, inputOf, target, budget, result);
+  if (inParts) {
+    clock.end("refine", "output");
+  } else if (refining) {
     T.inside = std::move(inside);
-    if (belowFloor) target.maxAngle = kAutoMaxAngle;
     step = detail::refine(T, input, target, budget, freeVertex, exact);
     inside = std::move(T.inside);
     clock.end("refine", "output");
@@ -556,12 +567,15 @@ Result meshInRange(const Pslg& input, const Options& asked) {
   }
 
   std::vector<const detail::RationalPoint*> exactAt;  // per output vertex (into exact)
-  extractMesh(T, inside, input, inputOf, freeVertex, exact, result.mesh, exactAt);
-  stats.vertices = uint32_t(result.mesh.vertexCount());
-  stats.triangles = uint32_t(result.mesh.triangleCount());
-  stats.segments = uint32_t(result.mesh.segments.size() / 2);
+  if (!inParts) extractMesh(T, inside, input, inputOf, freeVertex, exact, result.mesh, exactAt);
+  const Mesh& mesh = result.mesh;
+  stats.vertices = uint32_t(mesh.vertexCount());
+  stats.triangles = uint32_t(mesh.triangleCount());
+  stats.segments = uint32_t(mesh.segments.size() / 2);
   stats.steiner = stats.vertices - stats.inputVertices;
-  double largestArea = measureAngles(T, inside, exact, stats);
+  const double largestArea =
+      inParts ? measureAngles(mesh.points, mesh.triangles, stats.triangles, nullptr, exact, stats)
+              : measureAngles(T.pts, T.tri, T.triangleSlots(), &inside, exact, stats);
   if (refining) certify(target, options.maxAngle, largestArea, exactAt, stats, result);
   if (belowFloor) reportBelowFloor(options.maxAngle, result);
   clock.end("output");
@@ -569,7 +583,7 @@ Result meshInRange(const Pslg& input, const Options& asked) {
   return result;
 }
 
-}  // namespace
+}  // namespace detail
 
 namespace {
 
@@ -591,7 +605,7 @@ Result meshScaled(const Pslg& input, const Options& options) {
     r.stats.inputHoles = uint32_t(input.holes.size() / 2);
     return r;
   }
-  if (exponent == 0) return meshInRange(input, options);
+  if (exponent == 0) return detail::meshInRange(input, options, true);
   Pslg scaled = input;
   detail::scaleExactly(scaled.points, -exponent);
   detail::scaleExactly(scaled.holes, -exponent);
@@ -603,7 +617,7 @@ Result meshScaled(const Pslg& input, const Options& options) {
     double area = std::ldexp(options.maxArea, -2 * exponent);
     scaledOptions.maxArea = std::isinf(area) ? 0 : std::max(area, std::numeric_limits<double>::denorm_min());
   }
-  Result r = meshInRange(scaled, scaledOptions);
+  Result r = detail::meshInRange(scaled, scaledOptions, true);
   // Steiner points below 2^-1022 once scaled back would lose bits (subnormal doubles), and
   // the mesh could fold: refused rather than returned inexact.
   if (!detail::scaleExactly(r.mesh.points, exponent)) {

@@ -24,17 +24,42 @@ bool Boundary::splitSubsegment(uint32_t e, double preferred, uint32_t footOf) {
   SegmentLine line = job_.line(seg, pa, pb);
   double ta = line.param(pa), tb = line.param(pb);
   // A rounded split point may still miss the edge; next to a sliver triangle that can put it
-  // outside the edge's quadrilateral. Other split ratios are tried then.
-  for (double ratio : {s, 0.5, 0.45, 0.55, 0.4, 0.6, 1 / 3.0, 2 / 3.0}) {
-    double m[2];
-    line.at(ta + ratio * (tb - ta), m);
-    if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
-    uint32_t v = s_.addVertex(m, seg != kNone ? kOnSegment : kOnHull);
-    if (T.splitFixedEdge(e, v)) {
-      if (ratio == preferred) standForFoot(s_, job_.target, v, footOf, pa);
-      return true;
+  // outside the edge's quadrilateral. Other split ratios are tried then, and should the
+  // sliver be outside the domain, again once it is flipped away.
+  for (int opened = 0; opened <= kOuterSliverFlips; ++opened) {
+    if (opened && !openOuterSliver(e)) return false;
+    for (double ratio : {s, 0.5, 0.45, 0.55, 0.4, 0.6, 1 / 3.0, 2 / 3.0}) {
+      double m[2];
+      line.at(ta + ratio * (tb - ta), m);
+      if ((m[0] == pa[0] && m[1] == pa[1]) || (m[0] == pb[0] && m[1] == pb[1])) continue;
+      uint32_t v = s_.addVertex(m, seg != kNone ? kOnSegment : kOnHull);
+      if (T.splitFixedEdge(e, v)) {
+        if (ratio == preferred) standForFoot(s_, job_.target, v, footOf, pa);
+        return true;
+      }
+      s_.dropLastVertex();
     }
-    s_.dropLastVertex();
+  }
+  return false;
+}
+
+// The triangle outside the domain across a boundary edge can be a sliver whose apex lies on
+// the edge's line within rounding (a vertex between two collinear segments): a split point
+// would have to fall inside it, and there may be no double there. Nothing outside is meshed,
+// so the sliver's free edge is flipped instead, giving the edge another apex. False if there
+// is none to flip (the hull, fixed edges, a quadrilateral that is not strictly convex).
+bool Boundary::openOuterSliver(uint32_t e) {
+  Triangulation& T = s_.T;
+  const uint32_t f = T.opp[e];
+  if (T.inside[f / 3] || T.isGhost(f / 3)) return false;
+  for (uint32_t h : {next(f), prev(f)}) {
+    const uint32_t g = T.opp[h];
+    if (T.isFixed(h) || T.isGhost(g / 3)) continue;
+    const double *x = s_.P(T.tri[h]), *y = s_.P(T.tri[next(h)]), *z = s_.P(T.tri[prev(h)]),
+                 *w = s_.P(T.tri[prev(g)]);
+    if (orient2d(z, x, w) <= 0 || orient2d(w, y, z) <= 0) continue;
+    T.flip(h);
+    return true;
   }
   return false;
 }

@@ -38,6 +38,7 @@ class Boundary {
     return preferred > 0.01 && preferred < 0.99 ? preferred : shellRatio(e);
   }
   bool splitChord(uint32_t e);
+  bool openOuterSliver(uint32_t e);
 
   RefineState& s_;
   const Job& job_;

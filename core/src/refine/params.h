@@ -24,6 +24,11 @@ constexpr int kMinEdgeBits = 24, kMinEdgeUlpBits = 42;
 // Minimum angles above this need not terminate; a run that wanders is made again to it.
 constexpr double kSureMinAngle = 40;
 
+// --- Parts --------------------------------------------------------------------------------
+// A domain of several parts with at least this many triangles is meshed part by part
+// (parts.h); below it a whole run is quick, and its meshes stay as they were.
+constexpr size_t kPartsFrom = 4096;
+
 // --- Budgets --------------------------------------------------------------------------------
 // The default Steiner budget: this many per input vertex, at least kSteinerAtLeast.
 constexpr double kSteinerPerInputVertex = 50, kSteinerAtLeast = 20000;
@@ -41,6 +46,10 @@ constexpr size_t kVoronoiWalk = 64;
 // --- Boundary -----------------------------------------------------------------------------
 // Non-obtuse: passes of cutting slivers at altitude feet before the fans.
 constexpr int kCutAtFeetPasses = 4;
+
+// A boundary edge whose split is blocked by slivers outside the domain (collinear segments)
+// gets at most this many of them flipped away.
+constexpr int kOuterSliverFlips = 4;
 
 // --- Corner fans --------------------------------------------------------------------------
 // Input corners with a domain sector under this get a fan (non-obtuse: a right triangle

@@ -1,0 +1,299 @@
+#include "parts.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <string>
+
+#include "refine/params.h"
+#include "refine/threads.h"
+
+namespace acutemesh::detail {
+
+namespace {
+
+// A part: its triangles (slots of T) and, as a problem of its own, its vertices (input vertex
+// i of `pslg` is T's vertex vertices[i], then kFrame more) and the fixed edges around and
+// inside it as segments.
+struct Part {
+  std::vector<uint32_t> triangles;
+  std::vector<uint32_t> vertices;
+  Pslg pslg;
+  Result result;
+  std::exception_ptr failure;
+};
+
+// Per triangle slot of the domain its part, kNone outside; parts numbered by their first slot.
+uint32_t labelParts(const Triangulation& T, const std::vector<uint8_t>& inside,
+                    std::vector<uint32_t>& partOf) {
+  const uint32_t slots = T.triangleSlots();
+  partOf.assign(slots, kNone);
+  uint32_t parts = 0;
+  std::vector<uint32_t> stack;
+  for (uint32_t t = 0; t < slots; ++t) {
+    if (!inside[t] || partOf[t] != kNone) continue;
+    partOf[t] = parts;
+    stack.push_back(t);
+    while (!stack.empty()) {
+      const uint32_t u = stack.back();
+      stack.pop_back();
+      for (uint32_t e = 3 * u; e < 3 * u + 3; ++e) {
+        const uint32_t w = T.opp[e] / 3;
+        if (inside[w] && partOf[w] == kNone) partOf[w] = parts, stack.push_back(w);
+      }
+    }
+    ++parts;
+  }
+  return parts;
+}
+
+// Four vertices around a part, as far from it as it is wide: outside its domain, they keep
+// its boundary off the convex hull, as the rest of the input did, so that a sliver outside
+// a boundary edge always has an edge to flip away (Boundary::openOuterSliver).
+constexpr uint32_t kFrame = 4;
+void addFrame(Pslg& pslg) {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (size_t i = 0; i < pslg.points.size(); ++i)
+    lo[i % 2] = std::min(lo[i % 2], pslg.points[i]), hi[i % 2] = std::max(hi[i % 2], pslg.points[i]);
+  const double d = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  pslg.points.insert(pslg.points.end(), {lo[0] - d, lo[1] - d, hi[0] + d, lo[1] - d,
+                                         hi[0] + d, hi[1] + d, lo[0] - d, hi[1] + d});
+}
+
+// The parts' problems. Their segments run with the part on their left (a triangle's corners
+// are counter-clockwise), so fill NonZero keeps exactly the part: winding 1 inside it, 0 in
+// its lakes and outside. A fixed edge inside a part goes in both ways: a constraint that
+// winds nothing. False if a part's boundary has an edge no segment lies on (a kept hull).
+bool buildParts(const Triangulation& T, const std::vector<uint32_t>& partOf, uint32_t count,
+                std::vector<Part>& parts) {
+  parts.assign(count, Part{});
+  for (uint32_t t = 0; t < partOf.size(); ++t)
+    if (partOf[t] != kNone) parts[partOf[t]].triangles.push_back(t);
+  std::vector<uint32_t> local(T.vertexCount(), kNone), stamp(T.vertexCount(), kNone);
+  for (uint32_t p = 0; p < count; ++p) {
+    Part& part = parts[p];
+    auto at = [&](uint32_t v) {
+      if (stamp[v] != p) {
+        stamp[v] = p, local[v] = uint32_t(part.vertices.size());
+        part.vertices.push_back(v);
+        part.pslg.points.insert(part.pslg.points.end(), {T.point(v)[0], T.point(v)[1]});
+      }
+      return local[v];
+    };
+    for (uint32_t t : part.triangles)
+      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+        const bool boundary = partOf[T.opp[e] / 3] != p;
+        if (!T.fixed[e]) {
+          if (boundary) return false;
+          continue;
+        }
+        if (boundary && (T.segment.empty() || T.segment[e] == kNone)) return false;
+        if (!boundary && e > T.opp[e]) continue;
+        const uint32_t a = at(T.tri[e]), b = at(T.tri[next(e)]);
+        part.pslg.segments.insert(part.pslg.segments.end(), {a, b});
+        if (!boundary) part.pslg.segments.insert(part.pslg.segments.end(), {b, a});
+      }
+    for (uint32_t t : part.triangles)  // (every corner, should one touch no fixed edge)
+      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) at(T.tri[e]);
+    addFrame(part.pslg);
+  }
+  return true;
+}
+
+// How far each part's run has come (0..1), written by the thread running it, read by the
+// one that reports; and the share of the whole each part stands for (its triangles).
+class PartProgress {
+ public:
+  explicit PartProgress(const std::vector<Part>& parts)
+      : done_(new std::atomic<double>[parts.size()]), weight_(parts.size()) {
+    double total = 0;
+    for (const Part& part : parts) total += double(part.triangles.size());
+    for (size_t p = 0; p < parts.size(); ++p) {
+      done_[p] = 0;
+      weight_[p] = double(parts[p].triangles.size()) / total;
+    }
+  }
+  // Options::progress for part p's run: refinement's fraction, 1 once it is done.
+  void noteFrom(size_t p, const Progress& report) {
+    const std::string phase = report.phase;
+    if ((phase == "refine" || phase == "improve") && report.fraction >= 0)
+      done_[p] = std::max(done_[p].load(), report.fraction);
+    else if (phase == "output")
+      done_[p] = 1.0;
+  }
+  void finish(size_t p) { done_[p] = 1.0; }
+  double fraction() const {
+    double sum = 0;
+    for (size_t p = 0; p < weight_.size(); ++p) sum += weight_[p] * done_[p].load();
+    return sum;
+  }
+
+ private:
+  std::unique_ptr<std::atomic<double>[]> done_;
+  std::vector<double> weight_;
+};
+
+// A part's run. Memory running out on a worker thread goes to the calling thread, where
+// mesh() says so, instead of ending the process.
+void runPart(Part& part, const Options& options) {
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
+  try {
+    part.result = meshInRange(part.pslg, options, false);
+  } catch (...) {
+    part.failure = std::current_exception();
+  }
+#else
+  part.result = meshInRange(part.pslg, options, false);
+#endif
+}
+
+// Runs every part's problem on `threads` threads (the calling one alone for 1), the largest
+// first so that the last to end are small; reports the whole's fraction from the calling
+// thread, which alone may call Options::progress.
+void runParts(std::vector<Part>& parts, const Options& target, const Budget& budget,
+              unsigned threads) {
+  std::vector<size_t> order(parts.size());
+  for (size_t p = 0; p < parts.size(); ++p) order[p] = p;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return parts[a].triangles.size() > parts[b].triangles.size();
+  });
+  PartProgress progress(parts);
+  ProgressRelay* relay = budget.progress();
+  auto report = [&] {
+    if (!relay) return;
+    relay->note("refine", progress.fraction(), 0);
+    relay->poll();
+  };
+  std::atomic<size_t> next{0};
+  auto work = [&](bool reporting) {
+    for (size_t k; (k = next++) < order.size();) {
+      const size_t p = order[k];
+      Options options = target;
+      options.fill = FillRule::NonZero;
+      options.convexHull = false;
+      options.threads = 1;  // (the parts are the threads' work)
+      if (target.timeLimit > 0)  // (what is left of it; 0 would mean none)
+        options.timeLimit = std::max(target.timeLimit - budget.elapsed(), 1e-9);
+      options.progress = [&, p, reporting](const Progress& r) {
+        progress.noteFrom(p, r);
+        if (reporting) report();
+      };
+      runPart(parts[p], options);
+      progress.finish(p);
+      parts[p].pslg = Pslg{};  // (no longer needed)
+      if (reporting) report();
+    }
+  };
+#ifdef ACUTEMESH_THREADS
+  if (threads > 1 && parts.size() > 1) {
+    std::vector<std::thread> workers;
+    std::atomic<size_t> running{0};
+    for (unsigned i = 0; i < std::min<size_t>(threads, parts.size()); ++i) {
+      ++running;
+      workers.emplace_back([&] {
+        work(false);
+        --running;
+      });
+    }
+    // (This thread reports, and hears a cancel from the callback, while they work; the runs
+    // poll the cancel flag themselves.)
+    while (running > 0) {
+      report();
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    for (std::thread& worker : workers) worker.join();
+    return;
+  }
+#endif
+  (void)threads;
+  work(true);
+}
+
+}  // namespace
+
+bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, const Pslg& input,
+                 const std::vector<uint32_t>& inputOf, const Options& target,
+                 const Budget& budget, Result& result) {
+  if ((target.mode != Mode::Acute && target.mode != Mode::NonObtuse) || target.exactFeet ||
+      target.maxSteiner)
+    return false;
+  std::vector<uint32_t> partOf;
+  const uint32_t count = labelParts(T, inside, partOf);
+  if (count < 2) return false;
+  if (std::count_if(partOf.begin(), partOf.end(), [](uint32_t p) { return p != kNone; }) <
+      long(kPartsFrom))
+    return false;
+  std::vector<Part> parts;
+  if (!buildParts(T, partOf, count, parts)) return false;
+#ifdef ACUTEMESH_THREADS
+  const unsigned threads = threadsFor(target);
+#else
+  const unsigned threads = 1;
+#endif
+  runParts(parts, target, budget, threads);
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
+  for (const Part& part : parts)
+    if (part.failure) std::rethrow_exception(part.failure);
+#endif
+
+  // A part's run refusing its input would be a fault here: the caller meshes the domain whole.
+  for (const Part& part : parts)
+    if (part.result.status == Status::BadInput && !budget.stop()) return false;
+
+  // The mesh: input vertices at their indices, then T's other vertices and each part's
+  // Steiner points as they come, part by part. A part whose run was stopped before it had a
+  // mesh (a cancel, the time limit) keeps its triangles of T.
+  Mesh& mesh = result.mesh;
+  mesh = Mesh{};
+  const uint32_t inputCount = uint32_t(input.vertexCount());
+  mesh.points = input.points;
+  mesh.vertexKind.assign(inputCount, kUnusedVertex);
+  std::vector<uint32_t> index(T.vertexCount(), kNone);
+  std::copy(inputOf.begin(), inputOf.end(), index.begin());
+  auto output = [&](uint32_t v) {  // T's vertex v in the mesh
+    if (index[v] == kNone) {
+      index[v] = uint32_t(mesh.vertexKind.size());
+      mesh.points.insert(mesh.points.end(), {T.point(v)[0], T.point(v)[1]});
+      mesh.vertexKind.push_back(kSegmentVertex);  // (a crossing point)
+    } else if (v < inputOf.size()) {
+      mesh.vertexKind[index[v]] = kInputVertex;
+    }
+    return index[v];
+  };
+  for (uint32_t p = 0; p < count; ++p) {
+    Part& part = parts[p];
+    if (part.result.status == Status::Cancelled ||
+        (part.result.status != Status::Ok && result.status == Status::Ok)) {
+      result.status = part.result.status == Status::Cancelled ? Status::Cancelled
+                                                               : Status::TargetNotMet;
+      result.message = part.result.message;
+    }
+    const Mesh& m = part.result.mesh;
+    if (m.triangles.empty()) {
+      for (uint32_t t : part.triangles)
+        for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+          mesh.triangles.push_back(output(T.tri[e]));
+          if (T.fixed[e] && (partOf[T.opp[e] / 3] != p || e < T.opp[e]))
+            mesh.segments.insert(mesh.segments.end(), {output(T.tri[e]), output(T.tri[next(e)])});
+        }
+      continue;
+    }
+    std::vector<uint32_t> to(m.vertexCount());
+    const uint32_t own = uint32_t(part.vertices.size());
+    for (uint32_t i = 0; i < own; ++i) to[i] = output(part.vertices[i]);
+    for (uint32_t i = own + kFrame; i < m.vertexCount(); ++i) {
+      to[i] = uint32_t(mesh.vertexKind.size());
+      mesh.points.insert(mesh.points.end(), {m.points[2 * size_t(i)], m.points[2 * size_t(i) + 1]});
+      mesh.vertexKind.push_back(m.vertexKind[i]);
+    }
+    for (uint32_t v : m.triangles) mesh.triangles.push_back(to[v]);
+    for (uint32_t v : m.segments) mesh.segments.push_back(to[v]);
+    part.result = Result{};
+  }
+  return true;
+}
+
+}  // namespace acutemesh::detail
