@@ -103,8 +103,11 @@ struct CoordinateRange {
 };
 bool exactScale(const CoordinateRange& range, int& exponent);
 std::string rangeMessage(const CoordinateRange& range);
-// An angle for messages: "40 degrees", "16.4926 degrees".
+// An angle for messages: "40 degrees", "16.4926 degrees"; one a hair under 90 is never
+// printed as 90 ("89.999999999977121 degrees").
 std::string degreesText(double degrees);
+// A decimal of 6 or more digits that reads back as exactly x, for coordinates in messages.
+std::string shortestText(double x);
 bool scaleExactly(std::vector<double>& xy, int exponent);
 
 }  // namespace acutemesh::detail

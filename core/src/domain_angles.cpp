@@ -1,6 +1,10 @@
 #include "domain_angles.h"
 
+#include "build.h"
+
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace acutemesh::detail {
 namespace {
@@ -12,10 +16,9 @@ double cornerAngle(const Triangulation& T, uint32_t e) {
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 
-}  // namespace
-
-double smallestDomainAngle(const Triangulation& T) {
-  double smallest = 2 * M_PI;
+// Calls visit(v, radians) for every corner of the domain at every vertex v.
+template <class Visit>
+void forEachCorner(const Triangulation& T, Visit visit) {
   std::vector<uint32_t> spokes;  // the half-edges leaving a vertex, counter-clockwise
   for (uint32_t v = 0; v < T.vertexCount(); ++v) {
     const uint32_t e0 = T.vertexEdge[v];
@@ -39,15 +42,82 @@ double smallestDomainAngle(const Triangulation& T) {
     for (size_t k = 0; k < n; ++k) {
       const uint32_t s = spokes[(first + k) % n];
       if (k > 0 && wall(s)) {
-        if (sector > 0) smallest = std::min(smallest, sector);
+        if (sector > 0) visit(v, sector);
         sector = 0;
         ++walls;
       }
       if (in(s)) sector += cornerAngle(T, s);
     }
-    if (walls > 0 && sector > 0) smallest = std::min(smallest, sector);
+    if (walls > 0 && sector > 0) visit(v, sector);
   }
+}
+
+}  // namespace
+
+double smallestDomainAngle(const Triangulation& T) {
+  double smallest = 2 * M_PI;
+  forEachCorner(T, [&](uint32_t, double a) { smallest = std::min(smallest, a); });
   return smallest * (180 / M_PI);
+}
+
+std::vector<DomainCorner> domainCornersBelow(const Triangulation& T, double degrees) {
+  std::vector<DomainCorner> corners;
+  forEachCorner(T, [&](uint32_t v, double a) {
+    a *= 180 / M_PI;
+    if (a > degrees) return;
+    if (!corners.empty() && corners.back().vertex == v)
+      corners.back().degrees = std::min(corners.back().degrees, a);
+    else
+      corners.push_back({v, a});
+  });
+  std::sort(corners.begin(), corners.end(), [](const DomainCorner& a, const DomainCorner& b) {
+    return a.degrees != b.degrees ? a.degrees < b.degrees : a.vertex < b.vertex;
+  });
+  return corners;
+}
+
+NamedCorners::NamedCorners(const Triangulation& T, const std::vector<uint32_t>& inputOf,
+                           int exponent)
+    : exponent_(exponent) {
+  for (const DomainCorner& c : domainCornersBelow(T, kNamedCorner)) {
+    const double* p = T.point(c.vertex);
+    corners_.push_back({c.vertex < inputOf.size() ? inputOf[c.vertex] : kNone, reported(p[0]),
+                        reported(p[1]), c.degrees});
+  }
+}
+
+std::string NamedCorners::name(const Named& c) const {
+  const std::string at = "(" + shortestText(c.x) + ", " + shortestText(c.y) + ")";
+  return (c.input == kNone ? "a segment crossing at " + at
+                           : "input vertex " + std::to_string(c.input) + " " + at) +
+         ", " + degreesText(c.degrees);
+}
+
+std::string NamedCorners::below(double degrees, size_t most) const {
+  size_t count = 0;
+  std::string text;
+  for (const Named& c : corners_) {
+    if (c.degrees > degrees) break;
+    if (count++ < most) text += (text.empty() ? "" : "; ") + name(c);
+  }
+  if (count > most) text += " (" + std::to_string(count) + " in all)";
+  return text;
+}
+
+std::string NamedCorners::nearest(const std::vector<double>& xy) const {
+  std::vector<size_t> named;
+  for (size_t i = 0; i + 1 < xy.size() && !corners_.empty(); i += 2) {
+    size_t best = 0;
+    double closest = INFINITY;
+    for (size_t k = 0; k < corners_.size(); ++k) {
+      const double dx = corners_[k].x - xy[i], dy = corners_[k].y - xy[i + 1];
+      if (dx * dx + dy * dy < closest) closest = dx * dx + dy * dy, best = k;
+    }
+    if (std::find(named.begin(), named.end(), best) == named.end()) named.push_back(best);
+  }
+  std::string text;
+  for (size_t k : named) text += (text.empty() ? "" : "; ") + name(corners_[k]);
+  return text;
 }
 
 }  // namespace acutemesh::detail

@@ -7,6 +7,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
 
 #include "triangulation.h"
 
@@ -17,6 +20,43 @@ namespace acutemesh::detail {
 // domain and the rest), summed over the domain's triangles there. 360 where no corner exists
 // (a vertex with one wall or none, an empty domain).
 double smallestDomainAngle(const Triangulation& T);
+
+// A corner of the domain at T's vertex `vertex`, of `degrees`.
+struct DomainCorner {
+  uint32_t vertex;
+  double degrees;
+};
+
+// The domain's corners of at most `degrees`, the smallest at each vertex, smallest first: the
+// vertices a message about thin corners names.
+std::vector<DomainCorner> domainCornersBelow(const Triangulation& T, double degrees);
+
+// The domain's thin corners (under kNamedCorner degrees), taken before refinement, for
+// messages that say which input vertices a target fails at, so a user can fix the data.
+// inputOf maps T's vertices to input vertices (a vertex beyond it is a segment crossing);
+// coordinates are reported times 2^exponent (mesh() scales some inputs for meshing).
+class NamedCorners {
+ public:
+  static constexpr double kNamedCorner = 60;
+  NamedCorners() = default;
+  NamedCorners(const Triangulation& T, const std::vector<uint32_t>& inputOf, int exponent);
+  // A coordinate of T (or of the mesh before it is scaled back), as the caller gave it.
+  double reported(double x) const { return std::ldexp(x, exponent_); }
+  // "input vertex 7 (0.5, 2), 20 degrees", the corners of at most `degrees` (the smallest
+  // `most` of them, then "N in all"); empty if none.
+  std::string below(double degrees, size_t most) const;
+  // The corners nearest the points xy (x, y per point, as reported), each named once.
+  std::string nearest(const std::vector<double>& xy) const;
+
+ private:
+  struct Named {
+    uint32_t input;  // kNone: a segment crossing
+    double x, y, degrees;
+  };
+  std::string name(const Named& c) const;
+  std::vector<Named> corners_;  // smallest first
+  int exponent_ = 0;
+};
 
 // The floor for a largest angle, for a domain whose smallest corner is `corner` degrees: above
 // 72, every mesh of it has an angle of at least this.

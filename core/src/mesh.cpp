@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <new>
@@ -24,6 +25,9 @@ using detail::Budget;
 using detail::kNone;
 using detail::StepResult;
 using detail::Triangulation;
+
+// Messages about thin corners and missed triangles name this many of them at most.
+constexpr size_t kCornersNamed = 3;
 
 std::string checkInput(const Pslg& in) {
   if (in.points.size() % 2) return "points array has odd length " + std::to_string(in.points.size());
@@ -200,29 +204,42 @@ double smallestInputAngle(const Pslg& in) {
   return smallest * (180.0 / M_PI);
 }
 
+// Whether a maximum angle of `bound` is at or below the floor: never at 90 (every corner is
+// wider than 0, so its floor is below 90, however thin); below 90 the floor is measured in
+// floating point, and a bound within a hair of it counts as at it.
+bool atOrBelowFloor(double bound, const Stats& stats) {
+  return bound != kAutoMaxAngle && bound < 90 && bound <= stats.angleFloor + 1e-9;
+}
+
+// The corners whose floor (angleFloor of each) is at or above `bound`.
+double cornersUnder(double bound) { return 2 * (90 - bound) + 2e-9; }
+
 // Says when the domain's corners make a target
 // unreachable: a minimum angle above the smallest corner, or a maximum angle at or below the
-// floor (Stats::angleFloor). True for the latter: refinement then aims for the lowest bound
-// it can reach instead of spending the budget on the impossible.
-bool warnAboutInputAngles(const Options& target, Stats& stats) {
+// floor (Stats::angleFloor), naming the input vertices of those corners. True for the
+// latter: refinement then aims for the lowest bound it can reach instead of spending the
+// budget on the impossible.
+bool warnAboutInputAngles(const Options& target, const detail::NamedCorners& corners,
+                          Stats& stats) {
   using detail::degreesText;
   const std::string corner = degreesText(stats.smallestDomainAngle);
   if (target.minAngle > stats.smallestDomainAngle)
     stats.warnings.push_back("the domain's smallest corner (" + corner + ") is below the minimum "
                              "angle asked for (" + degreesText(target.minAngle) +
-                             "): triangles there cannot meet it");
-  // (The floor is measured in floating point: a bound within a hair of it counts as at it.)
-  if (target.mode != Mode::Acute || target.maxAngle == kAutoMaxAngle ||
-      target.maxAngle > stats.angleFloor + 1e-9)
-    return false;
+                             "): triangles there cannot meet it (" +
+                             corners.below(target.minAngle, kCornersNamed) + ")");
+  if (target.mode != Mode::Acute || !atOrBelowFloor(target.maxAngle, stats)) return false;
   const std::string floor = degreesText(stats.angleFloor);
+  const double under = cornersUnder(target.maxAngle);
+  const std::string which = " (the corners of " + degreesText(under) +
+                            " or less: " + corners.below(under, kCornersNamed) + ")";
   // Above 72 the floor is sharp (the corner's own triangles); at 72 it is Bishop's bound for
   // every domain, below which some domains can go, but not by any plan acutemesh has.
   stats.warnings.push_back(
       stats.angleFloor > 72
           ? "the domain's smallest corner (" + corner + ") sets a floor of " + floor +
                 ": no mesh has every angle below it; aiming for the lowest bound reachable "
-                "instead of " + degreesText(target.maxAngle)
+                "instead of " + degreesText(target.maxAngle) + which
           : "a maximum angle of " + degreesText(target.maxAngle) + " is at or below the floor "
                 "of " + floor + " that every domain reaches (its smallest corner is " + corner +
                 "), and acutemesh does not aim below it; aiming for the lowest bound reachable "
@@ -263,6 +280,32 @@ void listMissedTriangles(const Options& options, const Mesh& mesh,
   }
 }
 
+// Where the first missed triangles are (their centroids), and the thin input corners nearest
+// them: where a user would look to fix the data. Empty when nothing is missed.
+std::string missedPlaces(const Mesh& mesh, const std::vector<uint32_t>& missed,
+                         const detail::NamedCorners& corners) {
+  std::vector<double> at;
+  std::string text;
+  for (size_t i = 0; i < missed.size() && i < kCornersNamed; ++i) {
+    const uint32_t* v = &mesh.triangles[3 * size_t(missed[i])];
+    auto mean = [&](int d) {
+      const double* p = mesh.points.data() + d;
+      const double sum = p[2 * size_t(v[0])] + p[2 * size_t(v[1])] + p[2 * size_t(v[2])];
+      return corners.reported(sum / 3);
+    };
+    const double c[2] = {mean(0), mean(1)};
+    at.insert(at.end(), c, c + 2);
+    char place[64];
+    std::snprintf(place, sizeof place, "(%.9g, %.9g)", c[0], c[1]);
+    text += (text.empty() ? "" : ", ") + std::string(place);
+  }
+  if (text.empty()) return text;
+  if (missed.size() > kCornersNamed) text += " (of " + std::to_string(missed.size()) + " listed)";
+  text = "; missed triangles at " + text;
+  const std::string near = corners.nearest(at);
+  return near.empty() ? text : text + "; the input corners nearest them: " + near;
+}
+
 // Acute: the bound every angle of the mesh is certified below (Stats::angleBound).
 double certifiedAngleBound(const Options& options, const Mesh& mesh, const Stats& stats) {
   if (stats.nonAcute > 0 || stats.triangles == 0) return 0;
@@ -277,7 +320,8 @@ double certifiedAngleBound(const Options& options, const Mesh& mesh, const Stats
 // minimum angle (to a relative 1e-9) and the area. `asked` is the maximum angle asked for,
 // `options.maxAngle` what was aimed at (kAutoMaxAngle for a bound below the floor).
 void certify(const Options& options, double asked, double largestArea,
-             const std::vector<const detail::RationalPoint*>& exactAt, Stats& stats, Result& result) {
+             const std::vector<const detail::RationalPoint*>& exactAt,
+             const detail::NamedCorners& corners, Stats& stats, Result& result) {
   bool met = true;
   if (options.mode == Mode::Acute) {
     stats.angleBound = certifiedAngleBound(options, result.mesh, stats);
@@ -307,11 +351,13 @@ void certify(const Options& options, double asked, double largestArea,
   }
   if (!met && stats.certified && result.status == Status::TargetNotMet)
     result.message += "; every angle is below " + detail::degreesText(stats.angleBound) + " (certified)";
+  if (!met && result.status == Status::TargetNotMet)
+    result.message += missedPlaces(result.mesh, stats.missedTriangles, corners);
 }
 
 // The result of a run whose maximum angle was below the floor (warnAboutInputAngles): not met,
-// saying what was asked, the floor, and what the mesh reached.
-void reportBelowFloor(double asked, Result& result) {
+// saying what was asked, the floor and the corners that set it, and what the mesh reached.
+void reportBelowFloor(double asked, const detail::NamedCorners& corners, Result& result) {
   using detail::degreesText;
   Stats& stats = result.stats;
   stats.targetMet = false;
@@ -321,10 +367,13 @@ void reportBelowFloor(double asked, Result& result) {
                                   " (certified)"
                             : "the mesh is not acute" +
                                   (result.message.empty() ? "" : " (" + result.message + ")");
+  // (At Bishop's 72 the floor is every domain's, and no corner need be under the bound's.)
+  std::string which = corners.below(cornersUnder(asked), kCornersNamed);
+  if (which.empty()) which = degreesText(stats.smallestDomainAngle);
   result.status = Status::TargetNotMet;
   result.message = "a maximum angle of " + degreesText(asked) + " is at or below the floor of " +
                    degreesText(stats.angleFloor) + " set by the domain's smallest corner (" +
-                   degreesText(stats.smallestDomainAngle) + "); " + reached;
+                   which + "); " + reached;
 }
 
 }  // namespace
@@ -367,7 +416,17 @@ bool exactScale(const CoordinateRange& r, int& exponent) {
 
 std::string degreesText(double degrees) {
   char text[40];
-  std::snprintf(text, sizeof text, "%g degrees", degrees);
+  std::snprintf(text, sizeof text, "%g", degrees);
+  if (degrees < 90 && std::strtod(text, nullptr) >= 90) return shortestText(degrees) + " degrees";
+  return std::string(text) + " degrees";
+}
+
+std::string shortestText(double x) {
+  char text[32];
+  for (int digits = 6; digits <= 17; ++digits) {  // (from 6: "10", not "1e+01")
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if (std::strtod(text, nullptr) == x) break;
+  }
   return text;
 }
 
@@ -496,7 +555,9 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
 
 namespace detail {
 
-Result meshInRange(const Pslg& input, const Options& asked, bool byParts) {
+// `exponent`: the input was scaled by 2^-exponent for meshing (meshScaled); messages give
+// coordinates as the caller did. byParts: false for a part's own run (parts.h).
+Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool byParts) {
   Result result;
   Stats& stats = result.stats;
   // The steps report through the relay (progress.h), which the budget's polls let report too.
@@ -537,6 +598,8 @@ Result meshInRange(const Pslg& input, const Options& asked, bool byParts) {
   bool belowFloor = false;
   T.inside = std::move(inside);
   T.inside.resize(T.tri.size() / 3, 0);
+  const detail::NamedCorners corners(refining ? detail::NamedCorners(T, inputOf, exponent)
+                                              : detail::NamedCorners());
   // (The domain's corners for every constrained mode, so that a CDT's --stats says what a
   // refinement could reach; Delaunay ignores the segments.)
   if (options.mode != Mode::Delaunay) {
@@ -545,7 +608,7 @@ Result meshInRange(const Pslg& input, const Options& asked, bool byParts) {
     stats.smallestInputAngle = smallestInputAngle(input);
   }
   inside = std::move(T.inside);
-  if (refining) belowFloor = warnAboutInputAngles(target, stats);
+  if (refining) belowFloor = warnAboutInputAngles(target, corners, stats);
   if (!refining && (options.minAngle > 0 || options.maxArea > 0 || options.maxAngle != 90))
     stats.warnings.push_back(std::string("minAngle, maxAngle and maxArea have no effect in mode ") +
                              nameOf(options.mode) +
@@ -576,8 +639,8 @@ Result meshInRange(const Pslg& input, const Options& asked, bool byParts) {
   const double largestArea =
       inParts ? measureAngles(mesh.points, mesh.triangles, stats.triangles, nullptr, exact, stats)
               : measureAngles(T.pts, T.tri, T.triangleSlots(), &inside, exact, stats);
-  if (refining) certify(target, options.maxAngle, largestArea, exactAt, stats, result);
-  if (belowFloor) reportBelowFloor(options.maxAngle, result);
+  if (refining) certify(target, options.maxAngle, largestArea, exactAt, corners, stats, result);
+  if (belowFloor) reportBelowFloor(options.maxAngle, corners, result);
   clock.end("output");
   stats.seconds = budget.elapsed();
   return result;
@@ -605,7 +668,7 @@ Result meshScaled(const Pslg& input, const Options& options) {
     r.stats.inputHoles = uint32_t(input.holes.size() / 2);
     return r;
   }
-  if (exponent == 0) return detail::meshInRange(input, options, true);
+  if (exponent == 0) return detail::meshInRange(input, options, 0, true);
   Pslg scaled = input;
   detail::scaleExactly(scaled.points, -exponent);
   detail::scaleExactly(scaled.holes, -exponent);
@@ -617,7 +680,7 @@ Result meshScaled(const Pslg& input, const Options& options) {
     double area = std::ldexp(options.maxArea, -2 * exponent);
     scaledOptions.maxArea = std::isinf(area) ? 0 : std::max(area, std::numeric_limits<double>::denorm_min());
   }
-  Result r = detail::meshInRange(scaled, scaledOptions, true);
+  Result r = detail::meshInRange(scaled, scaledOptions, exponent, true);
   // Steiner points below 2^-1022 once scaled back would lose bits (subnormal doubles), and
   // the mesh could fold: refused rather than returned inexact.
   if (!detail::scaleExactly(r.mesh.points, exponent)) {

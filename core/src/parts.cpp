@@ -141,12 +141,12 @@ class PartProgress {
 void runPart(Part& part, const Options& options) {
 #if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
   try {
-    part.result = meshInRange(part.pslg, options, false);
+    part.result = meshInRange(part.pslg, options, 0, false);
   } catch (...) {
     part.failure = std::current_exception();
   }
 #else
-  part.result = meshInRange(part.pslg, options, false);
+  part.result = meshInRange(part.pslg, options, 0, false);
 #endif
 }
 
@@ -263,12 +263,12 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     }
     return index[v];
   };
+  bool missed = false;
   for (uint32_t p = 0; p < count; ++p) {
     Part& part = parts[p];
-    if (part.result.status == Status::Cancelled ||
-        (part.result.status != Status::Ok && result.status == Status::Ok)) {
-      result.status = part.result.status == Status::Cancelled ? Status::Cancelled
-                                                               : Status::TargetNotMet;
+    missed |= part.result.status != Status::Ok;
+    if (part.result.status == Status::Cancelled && result.status != Status::Cancelled) {
+      result.status = Status::Cancelled;
       result.message = part.result.message;
     }
     const Mesh& m = part.result.mesh;
@@ -292,6 +292,12 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     for (uint32_t v : m.triangles) mesh.triangles.push_back(to[v]);
     for (uint32_t v : m.segments) mesh.segments.push_back(to[v]);
     part.result = Result{};
+  }
+  // A part short of its target is counted by the caller's certificate, which names the places
+  // in the whole's numbering; only why it stopped is said here.
+  if (missed && result.status == Status::Ok && budget.outOfTime()) {
+    result.status = Status::TargetNotMet;
+    result.message = "time limit reached before every triangle met the target";
   }
   return true;
 }

@@ -14,12 +14,14 @@
 
 namespace acutemesh::detail {
 
-// mesh() below the coordinate scaling (mesh.cpp); byParts false for a part's own run.
-Result meshInRange(const Pslg& input, const Options& options, bool byParts);
+// mesh() below the coordinate scaling (mesh.cpp): the input was scaled by 2^-exponent;
+// byParts false for a part's own run.
+Result meshInRange(const Pslg& input, const Options& options, int exponent, bool byParts);
 
 // Meshes T's domain (`inside`, from input; T's vertex k < inputOf.size() is input vertex
 // inputOf[k]) part by part toward `target` (acute or non-obtuse) into result.mesh, with
-// result.status and message Cancelled or TargetNotMet when a part's run says so. False,
+// result.status and message Cancelled when a part's run was, TargetNotMet when one missed its
+// target as the time limit ran out (other misses are the caller's certificate's). False,
 // touching nothing, when the domain does not go by parts: one part, too small (kPartsFrom),
 // a part bounded where no segment lies (a kept hull), options a part cannot share (a Steiner
 // cap, exact feet), or a part's run refusing its input (then the caller meshes it whole).

@@ -386,9 +386,16 @@ check "min 30 max 80: bound" stdout_has '"angleBound": 80,'
 check "below the floor: exit 1" run 1 --mode acute --max-angle 75 --stats --no-output "$data/angles/wedge-20.poly"
 check "below the floor: warning" stderr_has "the domain's smallest corner (20 degrees) sets a floor of 80 degrees: no mesh has every angle below it"
 check "below the floor: message" stderr_has "acutemesh: a maximum angle of 75 degrees is at or below the floor of 80 degrees"
+check "below the floor: names the corner" stderr_has "set by the domain's smallest corner (input vertex 0 (0, 0), 20 degrees)"
 check "below the floor: status" stdout_has '"status": "target-not-met"'
 check "below the floor: certified acute" stdout_has '"nonAcute": 0, "obtuse": 0'
 check "below the floor: certified" stdout_has '"targetMet": false, "certified": true'
+# A ring out and back along nearly the same line (a 5e-11-degree tip, as in world-atlas's Norway):
+# 90 is above its floor, so no floor warning; not met, naming the tip's vertex and coordinates.
+printf '{"rings": [[[0, 0], [10, 0], [10, 10], [5.0000000000044, 10], [5, 15], [5, 10], [0, 10]]]}' >"$work/spike.json"
+check "thin spike: exit 1" run 1 --mode acute --max-steiner 2000 --no-output "$work/spike.json"
+check "thin spike: no floor warning" bash -c "! grep -q floor \"\$0\"" "$work/err"
+check "thin spike: names the tip" stderr_has "; the input corners nearest them: input vertex 4 (5, 15), 5.04"
 check "help lists cgshop" run 0 --help
 check "help text cgshop" stdout_has "cgshop: BASE.solution.json"
 

@@ -262,3 +262,86 @@ TEST(AngleBound, BelowTheFloorAimsForTheLowestBound) {
   Result r = mesh(wedge, o);
   EXPECT_TRUE(r.stats.warnings.empty());
 }
+
+// --- tiny input corners ----------------------------------------------------------------------
+
+// A digitising step on a map's coast (a 1.31-degree corner 0.0072 long, beside a reflex one,
+// in a box 20 wide): the fan there needs edges under 2^-24 of the extent, and the mesh must
+// still end acute and certified, turned, scaled and mirrored.
+TEST(TinyCorner, DigitisingStepEndsCertified) {
+  const Pslg step = fixtures::load(kData + "/angles/step-spike.poly").pslg;
+  for (double turn : {0.0, 30.0, -70.0})
+    for (double scale : {1.0, 1000.0, 0.001})
+      for (double mirror : {1.0, -1.0}) {
+        Pslg in = step;
+        const double c = std::cos(turn * M_PI / 180), s = std::sin(turn * M_PI / 180);
+        for (size_t i = 0; i < in.points.size(); i += 2) {
+          const double x = in.points[i], y = mirror * in.points[i + 1];
+          in.points[i] = scale * (c * x - s * y);
+          in.points[i + 1] = scale * (s * x + c * y);
+        }
+        const std::string what = "turned " + std::to_string(turn) + ", scaled " +
+                                 std::to_string(scale) + ", mirrored " + std::to_string(mirror);
+        Options o;
+        o.mode = Mode::Acute;
+        Result r = mesh(in, o);
+        EXPECT_NEAR(r.stats.smallestDomainAngle, 1.3107, 1e-3) << what;
+        EXPECT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+        EXPECT_TRUE(r.stats.certified) << what;
+        EXPECT_EQ(r.stats.nonAcute, 0u) << what;
+        EXPECT_TRUE(validate(in, r.mesh, o).ok) << what;
+      }
+}
+
+// A spike whose tip is 5e-11 degrees (a ring out and back along nearly the same line, as in
+// Norway's and Chile's borders): 90 is above its floor (just), so there is no floor warning;
+// no double mesh reaches it, and the message says where the triangles missed and names the
+// input vertex at the tip with its coordinates.
+TEST(TinyCorner, UnreachableCornerIsNamed) {
+  Pslg spike = polygon({0, 0, 10, 0, 10, 10, 5.0000000000044, 10, 5, 15, 5, 10, 0, 10});
+  Options o;
+  o.mode = Mode::Acute;
+  o.maxSteiner = 2000;
+  Result r = mesh(spike, o);
+  EXPECT_LT(r.stats.smallestDomainAngle, 1e-10);
+  EXPECT_LT(r.stats.angleFloor, 90);
+  EXPECT_TRUE(r.stats.warnings.empty()) << r.stats.warnings.front();
+  EXPECT_EQ(r.status, Status::TargetNotMet);
+  EXPECT_FALSE(r.stats.missedTriangles.empty());
+  EXPECT_NE(r.message.find("missed triangles at (5, "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("the input corners nearest them: input vertex 4 (5, 15), 5.04"),
+            std::string::npos) << r.message;
+  EXPECT_TRUE(validate(spike, r.mesh, o).ok);
+}
+
+// Below the floor, the warning and the message name the corners that set it: the smallest
+// few, and how many in all.
+TEST(TinyCorner, CornersUnderTheFloorAreNamed) {
+  // A four-pointed star: tips of 12.68 degrees at vertices 0, 2, 4, 6 (floor 83.66).
+  Pslg star = polygon({10, 0, 1, 1, 0, 10, -1, 1, -10, 0, -1, -1, 0, -10, 1, -1});
+  Options o;
+  o.mode = Mode::Acute;
+  o.maxAngle = 80;
+  Result r = mesh(star, o);
+  EXPECT_EQ(r.status, Status::TargetNotMet);
+  ASSERT_EQ(r.stats.warnings.size(), 1u);
+  const std::string& w = r.stats.warnings[0];
+  EXPECT_NE(w.find("the corners of 20 degrees or less: input vertex "), std::string::npos) << w;
+  EXPECT_NE(w.find(", 12.6804 degrees (4 in all))"), std::string::npos) << w;
+  EXPECT_NE(r.message.find("set by the domain's smallest corner (input vertex "), std::string::npos)
+      << r.message;
+  EXPECT_NE(r.message.find("(4 in all)"), std::string::npos) << r.message;
+  // One corner under the floor is named alone.
+  Pslg wedge = fixtures::load(kData + "/angles/wedge-20.poly").pslg;
+  r = mesh(wedge, o);
+  EXPECT_NE(r.message.find("corner (input vertex 0 (0, 0), 20 degrees)"), std::string::npos)
+      << r.message;
+}
+
+// An angle a hair under 90 is not printed as 90.
+TEST(TinyCorner, DegreesUnderNinetyAreNotPrintedAsNinety) {
+  EXPECT_EQ(detail::degreesText(90 - 2.3e-11), "89.999999999977 degrees");
+  EXPECT_EQ(detail::degreesText(90), "90 degrees");
+  EXPECT_EQ(detail::degreesText(80), "80 degrees");
+  EXPECT_EQ(detail::degreesText(16.49264), "16.4926 degrees");
+}

@@ -20,7 +20,7 @@ constexpr double kQualityRoom = 0.5;
 constexpr double kFootSlack = 1e-7;
 // No edge shorter than 2^-kMinEdgeBits of the input's extent, nor than 2^-kMinEdgeUlpBits of
 // its largest coordinate: past that, refinement would spiral into rounding noise.
-constexpr int kMinEdgeBits = 24, kMinEdgeUlpBits = 42;
+constexpr int kMinEdgeBits = 36, kMinEdgeUlpBits = 42;
 // Minimum angles above this need not terminate; a run that wanders is made again to it.
 constexpr double kSureMinAngle = 40;
 
