@@ -111,7 +111,11 @@ LOAD_END=$(cut -d' ' -f1-3 /proc/loadavg)
 
 # --- report -----------------------------------------------------------------------------------
 out="bench/results/countries-$(date +%F).md"  # (a second run the same day: -2, -3, ...)
-for ((k = 2; k < 100 && -e "$out"; k++)); do out="bench/results/countries-$(date +%F)-$k.md"; done
+k=2
+while [[ -e "$out" ]]; do
+  out="bench/results/countries-$(date +%F)-$k.md"
+  k=$((k + 1))
+done
 node bench/inputs/countries_report.mjs --work "$WORK" --out "$out"
 echo
 cat "$out"

@@ -125,6 +125,7 @@ class PartProgress {
       done_[p] = 1.0;
   }
   void finish(size_t p) { done_[p] = 1.0; }
+  double share(size_t p) const { return weight_[p]; }
   double fraction() const {
     double sum = 0;
     for (size_t p = 0; p < weight_.size(); ++p) sum += weight_[p] * done_[p].load();
@@ -174,7 +175,9 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
       Options options = target;
       options.fill = FillRule::NonZero;
       options.convexHull = false;
-      options.threads = 1;  // (the parts are the threads' work)
+      // The parts are the threads' work; but a part of more than a thread's share of the whole
+      // would end last, alone: it gets them all, as the others are done.
+      options.threads = progress.share(p) * threads > 1 ? threads : 1;
       if (target.timeLimit > 0)  // (what is left of it; 0 would mean none)
         options.timeLimit = std::max(target.timeLimit - budget.elapsed(), 1e-9);
       options.progress = [&, p, reporting](const Progress& r) {
