@@ -489,10 +489,9 @@ function buildTiles(p, t, cls) {
     const col = Math.min(g - 1, Math.floor((cx - b.x0) / w)), row = Math.min(g - 1, Math.floor((cy - b.y0) / h));
     const tile = tiles[row * g + col];
     const path = tile.paths[cls[i]] || (tile.paths[cls[i]] = new Path2D());
-    path.moveTo(p[a], p[a + 1]);
+    path.moveTo(p[a], p[a + 1]);  // (fill() closes each triangle: closePath took half the time)
     path.lineTo(p[bb], p[bb + 1]);
     path.lineTo(p[c], p[c + 1]);
-    path.closePath();
     for (const v of [a, bb, c]) {
       tile.x0 = Math.min(tile.x0, p[v]); tile.x1 = Math.max(tile.x1, p[v]);
       tile.y0 = Math.min(tile.y0, p[v + 1]); tile.y1 = Math.max(tile.y1, p[v + 1]);
