@@ -64,7 +64,7 @@ StepResult insertSegments(Triangulation& T, const Pslg& input,
 
 // Marks which triangles belong to the domain (per triangle slot: 1 inside, 0 outside or
 // ghost or free), following options.fill / convexHull and (Triangle fill) the input's hole
-// points. Fill rules need T.trackSegments.
+// points. Fill rules need T.trackWinding (and its `wind`).
 std::vector<uint8_t> classifyDomain(const Triangulation& T, const Pslg& input,
                                     const Options& options, bool keepHull,
                                     std::vector<std::string>& warnings);

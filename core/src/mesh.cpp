@@ -522,7 +522,7 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
                              std::vector<uint8_t>& inside, Stats& stats) {
   const bool constrained = options.mode != Mode::Delaunay;
   const uint32_t n = uint32_t(input.vertexCount());
-  T.trackSegments = constrained;
+  T.trackSegments = T.trackWinding = constrained;
   // Each vertex makes about two triangles (ghosts included); sizing up front avoids regrowth.
   T.reserveTriangles(2 * size_t(n) + 16);
   std::vector<uint32_t> canonical;
@@ -548,6 +548,7 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   clock.end("domain", refining ? "refine" : "output");
   if (std::find(inside.begin(), inside.end(), uint8_t(1)) == inside.end())
     return {Status::BadInput, emptyDomainMessage(T, input, domainOptions, keepHull)};
+  T.dropWinding();
   return {};
 }
 

@@ -18,10 +18,8 @@ void Triangulation::reserveTriangles(size_t count) {
   tri.resize(3 * count, kNone);
   opp.resize(3 * count, kNone);
   fixed.resize(3 * count, 0);
-  if (trackSegments) {
-    wind.resize(3 * count, 0);
-    segment.resize(3 * count, kNone);
-  }
+  if (trackWinding) wind.resize(3 * count, 0);
+  if (trackSegments) segment.resize(3 * count, kNone);
 }
 
 void Triangulation::reserveCapacity(size_t vertices, size_t triangles) {
@@ -29,10 +27,8 @@ void Triangulation::reserveCapacity(size_t vertices, size_t triangles) {
   vertexEdge.reserve(vertices);
   for (std::vector<uint32_t>* v : {&tri, &opp}) v->reserve(3 * triangles);
   fixed.reserve(3 * triangles);
-  if (trackSegments) {
-    wind.reserve(3 * triangles);
-    segment.reserve(3 * triangles);
-  }
+  if (trackWinding) wind.reserve(3 * triangles);
+  if (trackSegments) segment.reserve(3 * triangles);
   if (!inside.empty()) inside.reserve(triangles);
 }
 
@@ -361,11 +357,11 @@ uint32_t Triangulation::findEdge(uint32_t a, uint32_t b) const {
 
 void Triangulation::fixEdge(uint32_t e, int dir, uint32_t seg) {
   fixed[e] = fixed[opp[e]] = 1;
-  if (trackSegments) {
+  if (trackWinding) {
     wind[e] += dir;
     wind[opp[e]] -= dir;
-    if (seg != kNone) segment[e] = segment[opp[e]] = seg;
   }
+  if (trackSegments && seg != kNone) segment[e] = segment[opp[e]] = seg;
 }
 
 void Triangulation::unfixEdge(uint32_t e) {
@@ -505,11 +501,8 @@ bool Triangulation::removeFromSegment(uint32_t v, uint32_t ends[2]) {
   setAttr(3 * t2 + 1, rightA);
   link(3 * t1 + 2, 3 * t2 + 2);
   fixed[3 * t1 + 2] = fixed[3 * t2 + 2] = 1;
-  if (trackSegments) {
-    wind[3 * t1 + 2] = piece.wind;
-    wind[3 * t2 + 2] = -piece.wind;
-    segment[3 * t1 + 2] = segment[3 * t2 + 2] = piece.segment;
-  }
+  if (trackWinding) wind[3 * t1 + 2] = piece.wind, wind[3 * t2 + 2] = -piece.wind;
+  if (trackSegments) segment[3 * t1 + 2] = segment[3 * t2 + 2] = piece.segment;
   if (!inside.empty()) inside[t1] = insideLeft, inside[t2] = insideRight;
   vertexEdge[v] = kNone;
   for (uint32_t f : {3 * t1, 3 * t1 + 1, 3 * t2, 3 * t2 + 1}) stack.push_back(f);

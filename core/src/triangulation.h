@@ -42,13 +42,21 @@ class Triangulation {
   std::vector<uint32_t> tri;    // 3 per triangle; tri[3t] == kNone marks a free slot
   std::vector<uint32_t> opp;    // twin half-edge, 3 per triangle
   std::vector<uint8_t> fixed;   // per half-edge: 1 if the edge lies on an input segment
-  // Kept only when trackSegments is set (constrained triangulations), per half-edge:
-  // the net winding of the input segments along it (segments a->b minus segments b->a;
-  // twins hold opposite values), and the index of an input segment it lies on (crossing
-  // points are computed from the original segments, so rounding errors never compound).
+  // Per half-edge, in constrained triangulations: `wind` (while trackWinding) the net
+  // winding of the input segments along it (segments a->b minus segments b->a; twins hold
+  // opposite values), and `segment` (with trackSegments) the index of an input segment it lies
+  // on (crossing points are computed from the original segments, so rounding errors never
+  // compound).
   std::vector<int32_t> wind;
   std::vector<uint32_t> segment;
   bool trackSegments = false;
+  // Only the fill rules read `wind`: once the domain is known it is dropped, a fifth of
+  // every refinement state's memory.
+  bool trackWinding = false;
+  void dropWinding() {
+    trackWinding = false;
+    wind = {};
+  }
   std::vector<uint32_t> vertexEdge;  // per vertex: a half-edge leaving it, kNone if unused
   // Per triangle, kept when non-empty (refinement): 1 if the triangle is in the domain. Splits
   // pass it to the pieces; flips never cross a fixed edge, so both sides always agree.
@@ -121,7 +129,7 @@ class Triangulation {
   uint32_t findEdge(uint32_t a, uint32_t b) const;
 
   // Marks the edge of half-edge e (both directions) as lying on input segment `seg`; with
-  // trackSegments, adds `dir` (+1 along e, -1 against) to its net winding.
+  // trackWinding, adds `dir` (+1 along e, -1 against) to its net winding.
   void fixEdge(uint32_t e, int dir, uint32_t seg = kNone);
   void unfixEdge(uint32_t e);
 
@@ -144,13 +152,14 @@ class Triangulation {
     uint32_t segment;
   };
   EdgeAttr attr(uint32_t e) const {
-    return {opp[e], fixed[e], trackSegments ? wind[e] : 0, trackSegments ? segment[e] : kNone};
+    return {opp[e], fixed[e], trackWinding ? wind[e] : 0, trackSegments ? segment[e] : kNone};
   }
   // Sets e's flags from a (twin too, unless noTwin).
   void setAttr(uint32_t e, const EdgeAttr& a, bool withTwin = true) {
     if (withTwin) link(e, a.twin);
     fixed[e] = a.fixed;
-    if (trackSegments) wind[e] = a.wind, segment[e] = a.segment;
+    if (trackWinding) wind[e] = a.wind;
+    if (trackSegments) segment[e] = a.segment;
   }
   static constexpr EdgeAttr kPlain = {kNone, 0, 0, kNone};
   Location closedIn(uint32_t t, uint32_t zeros, const uint32_t zeroEdge[2]) const;

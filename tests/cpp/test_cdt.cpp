@@ -24,7 +24,7 @@ struct Built {
 
 Built buildCdt(const Pslg& in) {
   Built b;
-  b.T.trackSegments = true;
+  b.T.trackSegments = b.T.trackWinding = true;
   Options options;
   Budget budget(options);
   std::vector<uint32_t> inputOf;

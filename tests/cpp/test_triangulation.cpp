@@ -27,7 +27,8 @@ std::string checkStore(const Triangulation& T) {
       if (T.tri[f] != T.tri[next(e)] || T.tri[next(f)] != T.tri[e])
         return "twin of " + std::to_string(e) + " has other endpoints";
       if (T.fixed[e] != T.fixed[f]) return "fixed flag differs across " + std::to_string(e);
-      if (T.trackSegments && (T.wind[e] != -T.wind[f] || T.segment[e] != T.segment[f])) return "winding not antisymmetric";
+      if (T.trackWinding && T.wind[e] != -T.wind[f]) return "winding not antisymmetric";
+      if (T.trackSegments && T.segment[e] != T.segment[f]) return "segment differs between twins";
       ghostCorners += T.tri[e] == kGhost;
       if (T.tri[e] != kGhost && T.tri[e] >= T.vertexCount()) return "bad vertex index";
     }
