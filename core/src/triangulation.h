@@ -55,7 +55,7 @@ class Triangulation {
   bool trackWinding = false;
   void dropWinding() {
     trackWinding = false;
-    wind = {};
+    std::vector<int32_t>().swap(wind);  // (assigning {} would keep its capacity)
   }
   std::vector<uint32_t> vertexEdge;  // per vertex: a half-edge leaving it, kNone if unused
   // Per triangle, kept when non-empty (refinement): 1 if the triangle is in the domain. Splits
