@@ -18,13 +18,15 @@
 namespace acutemesh::detail {
 namespace {
 
-// One refinement of `start` into T, with freeVertex and exact as refine() leaves them.
+// One refinement of `start` into T, with freeVertex and exact as refine() leaves them;
+// releaseStart as refineWithStrategies has it.
 RefineOutcome refineOnce(const RefineState& start, const Pslg& input, const Options& options,
                          const Budget& budget, uint32_t steinerCap, Triangulation& T,
-                         std::vector<uint8_t>& freeVertex, std::vector<ExactVertex>& exact) {
+                         std::vector<uint8_t>& freeVertex, std::vector<ExactVertex>& exact,
+                         RefineState* releaseStart = nullptr) {
   RefineState best;
-  RefineOutcome outcome =
-      refineWithStrategies(start, input, options, budget, steinerCap, best, exact);
+  RefineOutcome outcome = refineWithStrategies(start, input, options, budget, steinerCap, best,
+                                               exact, releaseStart);
   best.markFree(freeVertex);
   T = std::move(best.T);
   return outcome;
@@ -35,7 +37,7 @@ RefineOutcome refineOnce(const RefineState& start, const Pslg& input, const Opti
 StepResult refine(Triangulation& T, const Pslg& input, const Options& options, const Budget& budget,
                   std::vector<uint8_t>& freeVertex, std::vector<ExactVertex>& exact) {
   exact.clear();
-  const RefineState start = RefineState::start(std::move(T), input.vertexCount());
+  RefineState start = RefineState::start(std::move(T), input.vertexCount());
   if (options.exactFeet && options.mode == Mode::NonObtuse) {
     RefineOutcome o = refineOnce(start, input, options, budget, 0, T, freeVertex, exact);
     if (o.feetHeld || !o.met || !o.result.ok() || budget.stop()) return o.result;
@@ -54,7 +56,7 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
     return result;
   }
   if (options.mode != Mode::Quality || options.minAngle <= kSureMinAngle)
-    return refineOnce(start, input, options, budget, 0, T, freeVertex, exact).result;
+    return refineOnce(start, input, options, budget, 0, T, freeVertex, exact, &start).result;
   const uint32_t half = uint32_t(std::clamp(
       steinerBudget(input, options, domainArea(start.T, options)) / 2, 1.0, double(kMaxVertices)));
   RefineOutcome o = refineOnce(start, input, options, budget, half, T, freeVertex, exact);

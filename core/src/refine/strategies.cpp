@@ -302,7 +302,7 @@ class ConcurrentStrategies {
 RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    const Options& options, const Budget& budget,
                                    uint32_t steinerCap, RefineState& out,
-                                   std::vector<ExactVertex>& exact) {
+                                   std::vector<ExactVertex>& exact, RefineState* releaseStart) {
   const ProgressRelay::Scope level(budget.progress());  // (nested: reports no fraction)
   const std::vector<Strategy> strategies = strategiesFor(options);
   const Target target(options);
@@ -329,6 +329,7 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
     run.go();
     choice.consider(std::move(run));
   }
+  if (releaseStart) *releaseStart = RefineState{};
   StrategyRun& best = choice.best;
   progressSpan(budget, target, kPolishRun, leading, strategies.size());
   if (best.met) best.refiner().polish();

@@ -23,11 +23,13 @@ struct RefineOutcome {
 
 // The strategies for options.mode in turn (several at once where there are threads), then
 // polish on the best, into `out` (its state) and `exact` (its exact feet). steinerCap (0: none)
-// bounds each run's Steiner points.
+// bounds each run's Steiner points. releaseStart: `start` itself, when the caller has no more
+// use for it: it is emptied once the runs are done, so that the polish holds one state fewer.
 RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    const Options& options, const Budget& budget,
                                    uint32_t steinerCap, RefineState& out,
-                                   std::vector<ExactVertex>& exact);
+                                   std::vector<ExactVertex>& exact,
+                                   RefineState* releaseStart = nullptr);
 
 // The Steiner points a run may make: Options::maxSteiner, or without a budget from the caller
 // kSteinerPerInputVertex per input vertex, at least kSteinerAtLeast, and with an area bound
