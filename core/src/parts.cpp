@@ -266,15 +266,12 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     }
     return index[v];
   };
-  bool missed = false;
+  bool missed = false, cancelled = false;
   for (uint32_t p = 0; p < count; ++p) {
     Part& part = parts[p];
-    missed |= part.result.status != Status::Ok;
-    if (part.result.status == Status::Cancelled && result.status != Status::Cancelled) {
-      result.status = Status::Cancelled;
-      result.message = part.result.message;
-    }
     const Mesh& m = part.result.mesh;
+    missed |= !part.result.stats.targetMet || m.triangles.empty();
+    cancelled |= part.result.status == Status::Cancelled;
     if (m.triangles.empty()) {
       for (uint32_t t : part.triangles)
         for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
@@ -297,8 +294,13 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     part.result = Result{};
   }
   // A part short of its target is counted by the caller's certificate, which names the places
-  // in the whole's numbering; only why it stopped is said here.
-  if (missed && result.status == Status::Ok && budget.outOfTime()) {
+  // in the whole's numbering; only why it stopped is said here (a cancel that came while the
+  // parts left were only improving leaves a mesh that meets the target).
+  if (cancelled) {
+    result.status = Status::Cancelled;
+    result.message = missed ? "cancelled before every part met the target"
+                            : "cancelled while removing Steiner points; the mesh meets the target";
+  } else if (missed && budget.outOfTime()) {
     result.status = Status::TargetNotMet;
     result.message = "time limit reached before every triangle met the target";
   }

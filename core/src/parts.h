@@ -20,8 +20,9 @@ Result meshInRange(const Pslg& input, const Options& options, int exponent, bool
 
 // Meshes T's domain (`inside`, from input; T's vertex k < inputOf.size() is input vertex
 // inputOf[k]) part by part toward `target` (acute or non-obtuse) into result.mesh, with
-// result.status and message Cancelled when a part's run was, TargetNotMet when one missed its
-// target as the time limit ran out (other misses are the caller's certificate's). False,
+// result.status and message Cancelled when a part's run was (saying whether every part met the
+// target), TargetNotMet when one missed it as the time limit ran out (other misses are the
+// caller's certificate's). False,
 // touching nothing, when the domain does not go by parts: one part, too small (kPartsFrom),
 // a part bounded where no segment lies (a kept hull), options a part cannot share (a Steiner
 // cap, exact feet), or a part's run refusing its input (then the caller meshes it whole).

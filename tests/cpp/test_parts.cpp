@@ -133,6 +133,10 @@ TEST(Parts, CancelledRunStillCoversEveryPart) {
   };
   const Result cut = mesh(in, o);
   ASSERT_EQ(cut.status, Status::Cancelled) << cut.message;
+  // (Cancelled early, some parts are still their CDT: the message must not say the mesh meets
+  // the target.)
+  EXPECT_FALSE(cut.stats.targetMet);
+  EXPECT_EQ(cut.message, "cancelled before every part met the target");
   Options plain = o;
   plain.mode = Mode::Cdt;  // (a cancelled mesh meets no angle target: check it as a CDT's)
   EXPECT_EQ(fixtures::validationErrors(in, plain, cut.mesh), "");
