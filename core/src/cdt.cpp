@@ -29,12 +29,23 @@ class SegmentInserter {
   SegmentInserter(Triangulation& T, const Pslg& input, const std::vector<uint32_t>& canonical,
                   const Budget& budget)
       : T_(T), input_(input), canonical_(canonical), budget_(budget),
-        inputCount_(uint32_t(input.vertexCount())) {
-    // representative_[s]: the first segment with the same two (merged) ends as s.
-    size_t n = input.segmentCount();
+        inputCount_(uint32_t(input.vertexCount())) {}
+
+  StepResult insert(uint32_t seg, uint64_t crossingBudget);
+  uint64_t crossings() const { return crossings_; }
+
+ private:
+  // representative_[s]: the first segment with the same two (merged) ends as s; made at the
+  // first crossing (most inputs have none).
+  uint32_t representative(uint32_t seg) {
+    if (representative_.empty()) findRepresentatives();
+    return representative_[seg];
+  }
+  void findRepresentatives() {
+    size_t n = input_.segmentCount();
     std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
     for (size_t i = 0; i < n; ++i) {
-      uint32_t a = canonical[input.segments[2 * i]], b = canonical[input.segments[2 * i + 1]];
+      uint32_t a = canonical_[input_.segments[2 * i]], b = canonical_[input_.segments[2 * i + 1]];
       keyed[i] = {(uint64_t(std::min(a, b)) << 32) | std::max(a, b), uint32_t(i)};
     }
     std::sort(keyed.begin(), keyed.end());
@@ -44,11 +55,6 @@ class SegmentInserter {
           i > 0 && keyed[i].first == keyed[i - 1].first ? representative_[keyed[i - 1].second]
                                                         : keyed[i].second;
   }
-
-  StepResult insert(uint32_t seg, uint64_t crossingBudget);
-  uint64_t crossings() const { return crossings_; }
-
- private:
   const double* P(uint32_t v) const { return T_.point(v); }
   const double* segmentEnd(uint32_t seg, int k) const {
     return P(canonical_[input_.segments[2 * size_t(seg) + k]]);
@@ -154,8 +160,8 @@ bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
   if (other == kNone) {
     u = segmentEnd(piece.seg, 0), v = segmentEnd(piece.seg, 1);
   } else {
-    uint32_t first = std::min(representative_[piece.seg], representative_[other]);
-    uint32_t second = std::max(representative_[piece.seg], representative_[other]);
+    uint32_t first = std::min(representative(piece.seg), representative(other));
+    uint32_t second = std::max(representative(piece.seg), representative(other));
     u = segmentEnd(first, 0), v = segmentEnd(first, 1);
     pw = segmentEnd(second, 0), px = segmentEnd(second, 1);
   }
@@ -203,6 +209,11 @@ bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
 // then restores the Delaunay property around the new edges.
 bool SegmentInserter::flipAway(uint32_t u, uint32_t end, const Piece& piece,
                                std::vector<uint32_t>& crossedEdges) {
+  const uint32_t edge = T_.insertEdgeThroughCavity(u, end, crossedEdges);
+  if (edge != kNone) {
+    T_.fixEdge(edge, piece.dir, piece.seg);
+    return true;
+  }
   // Queue entries remember their half-edge; flips elsewhere usually leave it valid, so the
   // search around w runs only when it went stale.
   std::deque<Crossed>& queue = queue_;

@@ -9,46 +9,37 @@
 namespace acutemesh::detail {
 namespace {
 
-// The angle at T.tri[e] of triangle e / 3 (radians).
-double cornerAngle(const Triangulation& T, uint32_t e) {
-  const double *a = T.point(T.tri[e]), *b = T.point(T.tri[next(e)]), *c = T.point(T.tri[prev(e)]);
-  const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
-  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
+// The angle swept counter-clockwise from spoke e to spoke f of one vertex (radians, in
+// (0, 2 pi)): a sector of the domain is one turn between two walls, whatever its triangles.
+double sweep(const Triangulation& T, uint32_t e, uint32_t f) {
+  const double *v = T.point(T.tri[e]), *a = T.point(T.tri[next(e)]), *b = T.point(T.tri[next(f)]);
+  const double ux = a[0] - v[0], uy = a[1] - v[1], wx = b[0] - v[0], wy = b[1] - v[1];
+  const double angle = std::atan2(ux * wy - uy * wx, ux * wx + uy * wy);
+  return angle > 0 ? angle : angle + 2 * M_PI;
 }
 
-// Calls visit(v, radians) for every corner of the domain at every vertex v.
+// Calls visit(v, radians) for every corner of the domain at every vertex v: each turn from a
+// wall (a fixed edge, or an edge between the domain and the rest) to the next wall
+// counter-clockwise, over triangles of the domain. (Between two walls the triangles are all
+// in the domain or all out of it; ghost spokes are never walls.)
 template <class Visit>
 void forEachCorner(const Triangulation& T, Visit visit) {
-  std::vector<uint32_t> spokes;  // the half-edges leaving a vertex, counter-clockwise
+  std::vector<uint32_t> walls;  // the wall spokes leaving a vertex, counter-clockwise
+  auto in = [&](uint32_t s) { return T.inDomain(s / 3); };
+  // Spoke s is a wall between triangle s / 3 and the one before it (clockwise), opp[s] / 3.
+  auto wall = [&](uint32_t s) { return T.isFixed(s) || in(s) != in(T.opp[s]); };
   for (uint32_t v = 0; v < T.vertexCount(); ++v) {
     const uint32_t e0 = T.vertexEdge[v];
     if (e0 == kNone) continue;
-    spokes.clear();
-    uint32_t e = e0;
+    walls.clear();
+    uint32_t e = e0, steps = 0;
     do {
-      spokes.push_back(e);
+      if (wall(e)) walls.push_back(e);
       e = T.opp[prev(e)];
-    } while (e != e0 && spokes.size() <= T.triangleSlots());
-    auto in = [&](uint32_t s) { return T.inDomain(s / 3); };
-    // Spoke s is a wall between triangle s / 3 and the one before it (clockwise), opp[s] / 3.
-    auto wall = [&](uint32_t s) { return T.isFixed(s) || in(s) != in(T.opp[s]); };
-    const size_t n = spokes.size();
-    size_t first = n;
-    for (size_t i = 0; i < n && first == n; ++i)
-      if (wall(spokes[i])) first = i;
-    if (first == n) continue;
-    double sector = 0;
-    size_t walls = 0;
-    for (size_t k = 0; k < n; ++k) {
-      const uint32_t s = spokes[(first + k) % n];
-      if (k > 0 && wall(s)) {
-        if (sector > 0) visit(v, sector);
-        sector = 0;
-        ++walls;
-      }
-      if (in(s)) sector += cornerAngle(T, s);
-    }
-    if (walls > 0 && sector > 0) visit(v, sector);
+    } while (e != e0 && ++steps <= T.triangleSlots());
+    if (walls.size() < 2) continue;
+    for (size_t k = 0; k < walls.size(); ++k)
+      if (in(walls[k])) visit(v, sweep(T, walls[k], walls[(k + 1) % walls.size()]));
   }
 }
 

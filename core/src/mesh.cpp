@@ -180,26 +180,35 @@ double measureAngles(const std::vector<double>& points, const std::vector<uint32
 // Smallest angle between two segments at a shared end (degrees), from the directions of the
 // segments at each vertex sorted by angle; 180 when no two segments meet.
 double smallestInputAngle(const Pslg& in) {
-  std::vector<std::pair<uint32_t, double>> ends;  // (vertex, direction of a segment from it)
-  for (size_t s = 0; s < in.segmentCount(); ++s) {
-    uint32_t a = in.segments[2 * s], b = in.segments[2 * s + 1];
-    double dx = in.points[2 * b] - in.points[2 * a], dy = in.points[2 * b + 1] - in.points[2 * a + 1];
-    if (dx == 0 && dy == 0) continue;
-    ends.push_back({a, detail::portableAtan2(dy, dx)});
-    ends.push_back({b, detail::portableAtan2(-dy, -dx)});
-  }
-  std::sort(ends.begin(), ends.end());
+  // The directions of the segments from each vertex, grouped by vertex (counting sort).
+  const size_t n = in.vertexCount();
+  std::vector<uint32_t> first(n + 1, 0);
+  auto each = [&](auto visit) {
+    for (size_t s = 0; s < in.segmentCount(); ++s) {
+      const uint32_t a = in.segments[2 * s], b = in.segments[2 * s + 1];
+      const double dx = in.points[2 * b] - in.points[2 * a];
+      const double dy = in.points[2 * b + 1] - in.points[2 * a + 1];
+      if (dx != 0 || dy != 0) visit(a, b, dx, dy);
+    }
+  };
+  each([&](uint32_t a, uint32_t b, double, double) { ++first[a + 1], ++first[b + 1]; });
+  for (size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+  std::vector<double> directions(first[n]);
+  std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+  each([&](uint32_t a, uint32_t b, double dx, double dy) {
+    directions[fill[a]++] = detail::portableAtan2(dy, dx);
+    directions[fill[b]++] = detail::portableAtan2(-dy, -dx);
+  });
   double smallest = M_PI;
-  for (size_t i = 0, j; i < ends.size(); i = j) {
-    for (j = i; j < ends.size() && ends[j].first == ends[i].first; ++j) {}
-    for (size_t k = i; k + 1 < j; ++k) {
-      double gap = ends[k + 1].second - ends[k].second;
-      if (gap > 0) smallest = std::min(smallest, gap);  // 0: the same segment twice
-    }
-    if (j - i >= 2) {
-      double wrap = ends[i].second + 2 * M_PI - ends[j - 1].second;
-      if (wrap > 0) smallest = std::min(smallest, wrap);
-    }
+  for (size_t v = 0; v < n; ++v) {
+    double* const from = directions.data() + first[v];
+    double* const to = directions.data() + first[v + 1];
+    if (to - from < 2) continue;
+    std::sort(from, to);
+    for (const double* d = from; d + 1 < to; ++d)
+      if (d[1] > d[0]) smallest = std::min(smallest, d[1] - d[0]);  // 0: the same segment twice
+    const double wrap = *from + 2 * M_PI - to[-1];
+    if (wrap > 0) smallest = std::min(smallest, wrap);
   }
   return smallest * (180.0 / M_PI);
 }

@@ -344,6 +344,75 @@ uint32_t Triangulation::insert(uint32_t v, uint32_t hint) {
   return insertAt(v, locate(point(v), hint));
 }
 
+uint32_t Triangulation::insertEdgeThroughCavity(uint32_t u, uint32_t w,
+                                                const std::vector<uint32_t>& crossed) {
+  // Side 0 runs left of u->w, side 1 right of it; both chains from u to w. A side's old edges
+  // are the cavity triangles' half-edges along it: on the left from the later vertex to the
+  // earlier, on the right from the earlier to the later.
+  if (chainStamp_.size() < vertexCount()) chainStamp_.resize(vertexCount(), 0);
+  if (++stamp_ == 0) std::fill(chainStamp_.begin(), chainStamp_.end(), 0), stamp_ = 1;
+  std::vector<uint32_t>& left = chains_[0];
+  std::vector<uint32_t>& right = chains_[1];
+  left.assign(1, u), right.assign(1, u);
+  sides_[0].clear(), sides_[1].clear(), cavity_.clear();
+  auto add = [&](int side, uint32_t v, uint32_t e) {
+    std::vector<uint32_t>& chain = chains_[side];
+    if (chain.back() == v) return true;  // a fan around v: still the same vertex
+    if (chain.size() > kCavityChain) return false;
+    if (v != w) {  // (w ends both chains)
+      if (chainStamp_[v] == stamp_) return false;
+      chainStamp_[v] = stamp_;
+    }
+    chain.push_back(v);
+    sides_[side].push_back(attr(e));
+    return true;
+  };
+  uint32_t h = crossed[0];  // in (u, r, l): h = r->l, next(h) = l->u, prev(h) = u->r
+  cavity_.push_back(h / 3);
+  if (!add(1, tri[h], prev(h)) || !add(0, tri[next(h)], next(h))) return kNone;
+  for (size_t i = 0; i < crossed.size(); ++i) {
+    const uint32_t g = opp[crossed[i]];  // l->r, in (l, r, y)
+    const uint32_t y = tri[prev(g)];
+    cavity_.push_back(g / 3);
+    const bool last = i + 1 == crossed.size();
+    const bool yLeft = !last && crossed[i + 1] == next(g);
+    if ((last || !yLeft) && !add(1, y, next(g))) return kNone;  // r->y on the right
+    if ((last || yLeft) && !add(0, y, prev(g))) return kNone;   // y->l on the left
+  }
+  if (left.back() != w || right.back() != w) return kNone;
+  for (uint32_t t : cavity_) freeTriangle(t);
+  // Left: the base u->w, the chain left of it. Right: the base w->u, the chain reversed.
+  std::reverse(right.begin(), right.end());
+  std::reverse(sides_[1].begin(), sides_[1].end());
+  const uint32_t e = fillPseudoPolygon(left.data(), sides_[0].data(), 0, left.size() - 1);
+  const uint32_t f = fillPseudoPolygon(right.data(), sides_[1].data(), 0, right.size() - 1);
+  setAttr(e, kPlain, false);
+  setAttr(f, kPlain, false);
+  link(e, f);
+  return e;
+}
+
+uint32_t Triangulation::fillPseudoPolygon(const uint32_t* chain, const EdgeAttr* sides, size_t lo,
+                                          size_t hi) {
+  // The apex: the chain vertex whose circle through the base's ends holds no other.
+  size_t k = lo + 1;
+  for (size_t i = lo + 2; i < hi; ++i)
+    if (incircle(point(chain[lo]), point(chain[hi]), point(chain[k]), point(chain[i])) > 0) k = i;
+  const uint32_t t = newTriangle();
+  setCorners(t, chain[lo], chain[hi], chain[k]);
+  const uint32_t e = 3 * t;  // chain[lo]->chain[hi]; then chain[hi]->apex, apex->chain[lo]
+  auto side = [&](uint32_t edge, size_t from, size_t to) {
+    if (to == from + 1) return setAttr(edge, sides[from]);
+    const uint32_t inner = fillPseudoPolygon(chain, sides, from, to);
+    setAttr(edge, kPlain, false);
+    setAttr(inner, kPlain, false);
+    link(edge, inner);
+  };
+  side(e + 1, k, hi);
+  side(e + 2, lo, k);
+  return e;
+}
+
 uint32_t Triangulation::findEdge(uint32_t a, uint32_t b) const {
   uint32_t e0 = vertexEdge[a];
   if (e0 == kNone) return kNone;

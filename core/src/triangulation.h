@@ -125,6 +125,15 @@ class Triangulation {
   // valid triangulation).
   bool removeFromSegment(uint32_t v, uint32_t ends[2]);
 
+  // Makes u-w an edge by replacing the triangles it crosses with the constrained Delaunay
+  // triangulations of the two pseudo-polygons either side of it (Anglada 1997), no flips.
+  // crossed: the half-edges u-w crosses, in order from u, each from the vertex right of u->w
+  // to the one left of it; none fixed, no vertex on u-w. Returns the half-edge u->w; kNone,
+  // changing nothing, where a side passes a vertex twice or is longer than kCavityChain (the
+  // caller flips the edges away instead).
+  static constexpr size_t kCavityChain = 256;
+  uint32_t insertEdgeThroughCavity(uint32_t u, uint32_t w, const std::vector<uint32_t>& crossed);
+
   // The half-edge leaving a with its other end at b, or kNone.
   uint32_t findEdge(uint32_t a, uint32_t b) const;
 
@@ -162,6 +171,10 @@ class Triangulation {
     if (trackSegments) segment[e] = a.segment;
   }
   static constexpr EdgeAttr kPlain = {kNone, 0, 0, kNone};
+  // insertEdgeThroughCavity's: one side's triangles over chain[lo..hi], the side left of
+  // chain[lo]->chain[hi]; sides[i] is what the old edge between chain[i] and chain[i+1] carried.
+  // Returns the new half-edge chain[lo]->chain[hi].
+  uint32_t fillPseudoPolygon(const uint32_t* chain, const EdgeAttr* sides, size_t lo, size_t hi);
   Location closedIn(uint32_t t, uint32_t zeros, const uint32_t zeroEdge[2]) const;
   uint32_t splitTriangle(uint32_t t, uint32_t v);
   uint32_t splitEdge(uint32_t e, uint32_t v);
@@ -177,6 +190,11 @@ class Triangulation {
   std::vector<uint32_t> freeSlots_;
   std::vector<uint32_t> scratch_;
   std::vector<uint32_t> ring_;  // removeVertex, removeFromSegment: the link of the vertex
+  // insertEdgeThroughCavity's scratch: each side's chain and old edges, the cavity's
+  // triangles, and per vertex the call that last put it in a chain.
+  std::vector<uint32_t> chains_[2], cavity_, chainStamp_;
+  std::vector<EdgeAttr> sides_[2];
+  uint32_t stamp_ = 0;
   mutable uint32_t rng_ = 2463534242u;
 };
 

@@ -105,7 +105,7 @@ const Case kCases[] = {
     {"extra-field.poly", kReadError, 0, "extra-field.poly:3: expected '<id> <x> <y>', found an extra field '7'"},
     {"far-offset-1e10.poly", kMesh, 29, nullptr},
     {"far-offset-1e15.poly", kMesh, 6, nullptr},
-    {"grazes-a-corner.poly", kMesh, 4, nullptr},
+    {"grazes-a-corner.poly", kMesh, 3, nullptr},
     {"hex-coordinate.node", kReadError, 0, "hex-coordinate.node:2: expected x coordinate (a number), found '0x10'"},
     {"hole-count-far-larger-than-file.poly", kReadError, 0, "hole-count-far-larger-than-file.poly:11: expected a hole count the rest of the text can ho"},
     {"hole-eats-everything.poly", kEmptyDomain, 0, "the domain is empty: the hole point's region is all of it"},

@@ -3,6 +3,7 @@
 // crossings, overlaps and vertices on segments are resolved.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 
@@ -78,8 +79,24 @@ bool isFixedChain(const Triangulation& T, uint32_t a, uint32_t b, uint32_t input
   return false;
 }
 
+// Twins that do not run between the same two vertices the other way, or whose twin is not
+// them; live triangles whose corners' vertexEdge leads elsewhere.
+size_t brokenLinks(const Triangulation& T) {
+  size_t bad = 0;
+  for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e) {
+    if (T.isFree(e / 3)) continue;
+    const uint32_t f = T.opp[e];
+    bad += f == kNone || T.opp[f] != e || T.tri[f] != T.tri[next(e)] || T.tri[next(f)] != T.tri[e] ||
+           T.fixed[e] != T.fixed[f];
+  }
+  for (uint32_t v = 0; v < T.vertexCount(); ++v)
+    bad += T.vertexEdge[v] != kNone && T.tri[T.vertexEdge[v]] != v;
+  return bad;
+}
+
 void expectValidCdt(const Pslg& in, const Built& b) {
   ASSERT_TRUE(b.result.ok()) << b.result.message;
+  EXPECT_EQ(brokenLinks(b.T), 0u);
   EXPECT_EQ(invertedTriangles(b.T), 0u);
   EXPECT_EQ(nonDelaunayEdges(b.T), 0u);
   for (size_t s = 0; s < in.segmentCount(); ++s) {
@@ -188,4 +205,40 @@ TEST(Cdt, SegmentAlongHullThroughCollinearVertex) {
     Built b = buildCdt(in);
     expectValidCdt(in, b);
   }
+}
+
+// Segments that cross many edges (a star polygon with random radii, as bench/gen.mjs makes):
+// the crossed triangles give way to the triangulations of the two sides at once.
+TEST(Cdt, StarPolygonSegmentsCrossManyEdges) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  const int n = 3000;
+  std::vector<double> angles(n);
+  for (double& a : angles) a = 2 * M_PI * u(rng);
+  std::sort(angles.begin(), angles.end());
+  Pslg in;
+  for (int i = 0; i < n; ++i) {
+    const double r = 0.5 + 0.5 * u(rng);
+    in.points.push_back(r * std::cos(angles[i]));
+    in.points.push_back(r * std::sin(angles[i]));
+    in.segments.push_back(i);
+    in.segments.push_back((i + 1) % n);
+  }
+  Built b = buildCdt(in);
+  expectValidCdt(in, b);
+  EXPECT_EQ(b.T.vertexCount(), uint32_t(n));
+}
+
+// One segment across a fence of 2 x 600 points: each side's chain is longer than the cavity
+// method takes (Triangulation::kCavityChain), so the crossed edges are flipped away instead.
+TEST(Cdt, SegmentAcrossALongFence) {
+  Pslg in;
+  const int n = 600;
+  static_assert(n > Triangulation::kCavityChain, "both paths");
+  for (int i = 0; i < n; ++i)
+    for (double y : {1.0, -1.0}) in.points.push_back(i + (y > 0 ? 0.5 : 0)), in.points.push_back(y);
+  in.points.insert(in.points.end(), {-1, 0.01, n + 1.0, -0.01});
+  in.segments = {2 * n, 2 * n + 1};
+  Built b = buildCdt(in);
+  expectValidCdt(in, b);
 }
