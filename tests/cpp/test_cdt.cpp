@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <random>
 #include <string>
 
@@ -241,4 +242,26 @@ TEST(Cdt, SegmentAcrossALongFence) {
   in.segments = {2 * n, 2 * n + 1};
   Built b = buildCdt(in);
   expectValidCdt(in, b);
+}
+
+// Random segments between points of a small integer grid: cocircular and collinear vertices
+// everywhere, segments through vertices, overlapping and crossing one another.
+TEST(Cdt, RandomSegmentsOnAGrid) {
+  const char* env = std::getenv("ACUTEMESH_CDT_ROUNDS");  // (more rounds by hand)
+  const int rounds = env ? std::atoi(env) : 30;
+  std::mt19937_64 rng(3);
+  for (int round = 0; round < rounds; ++round) {
+    SCOPED_TRACE("round " + std::to_string(round));
+    Pslg in;
+    const int side = 4 + int(rng() % 12);
+    for (int i = 0; i < side * side; ++i)
+      in.points.push_back(double(i % side)), in.points.push_back(double(i / side));
+    const int segments = 1 + int(rng() % (3 * side));
+    for (int s = 0; s < segments; ++s)
+      in.segments.push_back(uint32_t(rng() % (side * side))),
+          in.segments.push_back(uint32_t(rng() % (side * side)));
+    Built b = buildCdt(in);
+    expectValidCdt(in, b);
+    if (HasFailure()) return;
+  }
 }
