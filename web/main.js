@@ -137,6 +137,7 @@ function slug(text) {
 // (its mesh must not replace the new preview), and the stats, histogram and downloads go.
 function inputChanged() {
   inputSeq++;
+  view.stopBuilding();
   stopRun();
   clearResult();
 }
@@ -622,8 +623,10 @@ function wire() {
   ui.text.addEventListener('keydown', (e) => { if (e.key === 'Enter') run(); });
   ui.font.addEventListener('change', textChanged);
   ui.tolerance.addEventListener('change', () => { saveUrl(); if (current.type !== 'draw') preview(); });
-  ui.file.addEventListener('change', () => { if (ui.file.files[0]) takeFile(ui.file.files[0]); ui.file.value = ''; });
+  // (A mesh still being drawn for the old input stops at once, before the new one is read.)
+  ui.file.addEventListener('change', () => { view.stopBuilding(); if (ui.file.files[0]) takeFile(ui.file.files[0]); ui.file.value = ''; });
   ui.sample.addEventListener('change', async () => {
+    view.stopBuilding();
     if (!ui.sample.value) return;
     try { await takeFile(await takeSample(ui.sample.value), 'sample'); } catch (e) { setStatus(e.message, 'error'); }
   });

@@ -6,7 +6,9 @@
 // frame is then a few fill/stroke calls per visible tile under one transform. When a full frame is slow
 // (hundreds of thousands of triangles on a software rasteriser), frames during a gesture
 // redraw the last full frame as a bitmap, scaled and shifted, and the full frame follows when
-// the gesture pauses: panning stays smooth and the picture is sharp again at rest.
+// the gesture pauses: panning stays smooth and the picture is sharp again at rest. A large mesh
+// (over LARGE_MESH triangles) is turned into paths and drawn a slice of SLICE_MS at a time,
+// between frames, so that the page keeps answering while it arrives.
 import { CLASSES } from './angles.js';
 
 const SEGMENT_COLOR = '#111';
@@ -17,6 +19,8 @@ const STEINER_MAX_PX = 3;   // ...up to this many CSS pixels
 const DOT_MIN_PX = 0.6;     // smaller dots are not drawn
 const SLOW_FRAME_MS = 24;   // above this, gestures use the bitmap path
 const SETTLE_MS = 140;      // pause after which a gesture counts as over
+const LARGE_MESH = 50000;   // triangles from which paths are built and drawn in slices
+const SLICE_MS = 40;        // the main thread's time per slice
 
 export class MeshView {
   constructor(canvas) {
@@ -41,6 +45,8 @@ export class MeshView {
     this.interacting = false;
     this.settleTimer = 0;
     this.pending = 0;
+    this.meshSeq = 0;       // bumped by every new content: a slow build of an older one stops
+    this.drawJob = null;    // a frame being drawn in slices: { ops, next, busyMs }
     this.bounds = null;
     this.pointers = new Map();
     this.gesture = null;
@@ -49,19 +55,42 @@ export class MeshView {
   }
 
   // ---- content ------------------------------------------------------------------------
+  // A large mesh's paths are built a slice at a time; the picture before it stays until they
+  // are ready (dataset.content is 'building' meanwhile, then 'mesh'; dataset.frame is
+  // 'drawing' while a frame is drawn in slices, 'done' once it is whole).
   setMesh(m, cls, nInput) {
     const { points: p, triangles: t } = m;
-    const tiles = buildTiles(p, t, cls);
-    let sum = 0, count = 0;
-    for (const tile of tiles) { sum += tile.edgeSum; count += tile.edgeCount; }
-    this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge: count ? sum / count : 0,
-      segments: segmentPath(p, m.segments), shortest: shortestEdges(p, t) };
+    const seq = ++this.meshSeq;
     this.preview = null;
     this.bounds = mainBounds(meshParts(p, t));
     this.canvas.dataset.extent = Object.values(boundsOf(p, t)).join(',');
-    this.cacheXform = null;
-    this.canvas.dataset.content = 'mesh';
-    this.requestRender();
+    const build = meshPaths(p, t, cls, m.segments);
+    const install = ({ tiles, meanEdge, segments, shortest }) => {
+      this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge, segments, shortest };
+      this.cacheXform = null;
+      this.canvas.dataset.frame = 'drawing';  // (until its first frame is whole)
+      this.canvas.dataset.content = 'mesh';
+      this.requestRender();
+    };
+    if (t.length / 3 <= LARGE_MESH) return install(finish(build));
+    this.canvas.dataset.content = 'building';
+    const slice = () => {
+      if (seq !== this.meshSeq) return;  // newer content took over
+      const t0 = performance.now();
+      let r;
+      do r = build.next(); while (!r.done && performance.now() - t0 < SLICE_MS);
+      if (r.done) install(r.value);
+      else setTimeout(slice, 0);
+    };
+    slice();
+  }
+
+  // A new input is coming: a mesh still being built for the old one is dropped (the picture
+  // on screen stays until the new one replaces it).
+  stopBuilding() {
+    if (this.canvas.dataset.content !== 'building') return;
+    this.meshSeq++;
+    this.canvas.dataset.content = this.mesh ? 'mesh' : this.preview ? 'preview' : '';
   }
 
   // rings + fill rule (a shape), or a PSLG (points and segments, no known inside).
@@ -81,6 +110,7 @@ export class MeshView {
     }
     this.preview = { path, fill: fill === 'nonzero' ? 'nonzero' : 'evenodd', segments, points };
     this.mesh = null;
+    this.meshSeq++;
     this.bounds = rings ? mainBounds(rings.map(ringPart)) : boundsOf(points);
     this.canvas.dataset.content = 'preview';
     this.requestRender();
@@ -88,6 +118,7 @@ export class MeshView {
 
   clear() {
     this.mesh = null;
+    this.meshSeq++;
     this.preview = null;
     this.canvas.dataset.content = '';
     this.requestRender();
@@ -129,45 +160,94 @@ export class MeshView {
   }
 
   render() {
-    const t0 = performance.now();
     const fast = this.interacting && this.lastFullMs > SLOW_FRAME_MS && this.cacheXform;
+    this.drawJob = null;  // a frame still being drawn in slices starts over
     if (fast) this.#renderCached();
+    else if (this.mesh && this.mesh.triangles.length / 3 > LARGE_MESH) return this.#drawInSlices();
     else {
-      this.#renderFull();
-      // Canvas drawing is recorded and rasterised later, off this measurement; copying one
-      // pixel forces the raster now, so the time below is what the frame really costs. The
-      // copy goes to a 1-pixel canvas made for reading: reading the view itself every frame
-      // would make the browser warn (and move the view to a slower, readable canvas).
-      this.probe.drawImage(this.canvas, 0, 0, 1, 1, 0, 0, 1, 1);
-      this.probe.getImageData(0, 0, 1, 1);
-      this.lastFullMs = performance.now() - t0;
-      this.canvas.dataset.renderMs = this.lastFullMs.toFixed(1);
-      if (this.lastFullMs > SLOW_FRAME_MS) this.#storeCache();
+      const t0 = performance.now();
+      for (const op of this.#frameOps()) op();
+      this.#raster();
+      this.#frameDrawn(performance.now() - t0);
+      return;
     }
-    if (this.overlay) {
-      this.ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
-      this.overlay(this.ctx, this);
-    }
+    this.#drawOverlay();
     this.frameCount++;
   }
 
-  #renderFull() {
+  // Canvas drawing is recorded and rasterised later, off any measurement; copying one pixel
+  // forces the raster now, so a time taken after it is what the drawing really cost. The copy
+  // goes to a 1-pixel canvas made for reading: reading the view itself every frame would make
+  // the browser warn (and move the view to a slower, readable canvas).
+  #raster() {
+    this.probe.drawImage(this.canvas, 0, 0, 1, 1, 0, 0, 1, 1);
+    this.probe.getImageData(0, 0, 1, 1);
+  }
+
+  #frameDrawn(ms) {
+    this.canvas.dataset.frame = 'done';
+    this.lastFullMs = ms;
+    this.canvas.dataset.renderMs = ms.toFixed(1);
+    if (ms > SLOW_FRAME_MS) this.#storeCache();
+    this.#drawOverlay();
+    this.frameCount++;
+  }
+
+  #drawOverlay() {
+    if (!this.overlay) return;
+    this.ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
+    this.overlay(this.ctx, this);
+  }
+
+  // A large mesh's frame: its drawing steps run until SLICE_MS is spent, the rest in the next
+  // animation frames (fills, then edges, then segments and dots, as in one go). A new frame
+  // asked for meanwhile starts over.
+  #drawInSlices() {
+    const job = { ops: this.#frameOps(), next: 0, busyMs: 0 };
+    this.drawJob = job;
+    this.canvas.dataset.frame = 'drawing';
+    const slice = () => {
+      if (this.drawJob !== job) return;
+      const t0 = performance.now();
+      this.#worldTransform();
+      while (job.next < job.ops.length && performance.now() - t0 < SLICE_MS) {
+        job.ops[job.next++]();
+        this.#raster();
+      }
+      job.busyMs += performance.now() - t0;
+      if (job.next < job.ops.length) return void requestAnimationFrame(slice);
+      this.drawJob = null;
+      this.#frameDrawn(job.busyMs);
+    };
+    slice();
+  }
+
+  // World -> device pixels, y up.
+  #worldTransform() {
     const { ctx, dpr, s } = this;
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = BG;
-    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
-    // World -> device pixels, y up.
     ctx.setTransform(dpr * s, 0, 0, -dpr * s, dpr * this.tx, dpr * this.ty);
-    const px = 1 / s;  // one CSS pixel in world units
     ctx.lineJoin = 'round';
+  }
+
+  // The steps that draw a full frame, in order.
+  #frameOps() {
+    const { ctx, s } = this;
+    const ops = [() => {
+      ctx.setTransform(1, 0, 0, 1, 0, 0);
+      ctx.fillStyle = BG;
+      ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+      this.#worldTransform();
+    }];
+    const px = 1 / s;  // one CSS pixel in world units
     if (this.mesh) {
       const m = this.mesh;
       // Only tiles that meet the window: zoomed in, most of a big mesh costs nothing.
       const [wx0, wy1] = this.toWorld(0, 0), [wx1, wy0] = this.toWorld(this.w, this.h);
       const visible = m.tiles.filter((b) => b.x1 >= wx0 && b.x0 <= wx1 && b.y1 >= wy0 && b.y0 <= wy1);
       CLASSES.forEach((c, k) => {
-        ctx.fillStyle = c.color;
-        for (const tile of visible) if (tile.paths[k]) ctx.fill(tile.paths[k]);
+        for (const tile of visible) {
+          if (tile.paths[k]) ops.push(() => { ctx.fillStyle = c.color; ctx.fill(tile.paths[k]); });
+        }
       });
       const edgePx = m.meanEdge * s;
       if (this.showEdges && edgePx > 1.5) {
@@ -175,30 +255,36 @@ export class MeshView {
         // colour is opaque (a blend toward the ink): translucent strokes of a huge path make
         // the rasteriser composite the whole path as a layer, many times slower.
         const alpha = Math.min(0.55, 0.12 + (edgePx - 1.5) * 0.05);
-        ctx.strokeStyle = mix(alpha);
-        ctx.lineWidth = 0.7 * px;
-        for (const tile of visible) ctx.stroke(tile.edges);
+        for (const tile of visible) {
+          ops.push(() => { ctx.strokeStyle = mix(alpha); ctx.lineWidth = 0.7 * px; ctx.stroke(tile.edges); });
+        }
       }
+      ops.push(() => {
+        ctx.strokeStyle = SEGMENT_COLOR;
+        ctx.lineWidth = 1.6 * px;
+        ctx.stroke(m.segments);
+      });
+      if (this.showSteiner) ops.push(() => this.#drawSteiner());
+    } else if (this.preview) ops.push(() => this.#drawPreview(px));
+    return ops;
+  }
+
+  #drawPreview(px) {
+    const { ctx } = this;
+    const p = this.preview;
+    if (p.path) {
+      ctx.fillStyle = 'rgba(31,111,178,.12)';
+      ctx.fill(p.path, p.fill);
       ctx.strokeStyle = SEGMENT_COLOR;
-      ctx.lineWidth = 1.6 * px;
-      ctx.stroke(m.segments);
-      if (this.showSteiner) this.#drawSteiner();
-    } else if (this.preview) {
-      const p = this.preview;
-      if (p.path) {
-        ctx.fillStyle = 'rgba(31,111,178,.12)';
-        ctx.fill(p.path, p.fill);
-        ctx.strokeStyle = SEGMENT_COLOR;
-        ctx.lineWidth = 1.4 * px;
-        ctx.stroke(p.path);
-      }
-      if (p.segments) {
-        ctx.strokeStyle = SEGMENT_COLOR;
-        ctx.lineWidth = 1.4 * px;
-        ctx.stroke(p.segments);
-      }
-      this.#drawDots(p.points, 0, SEGMENT_COLOR, 1.6);
+      ctx.lineWidth = 1.4 * px;
+      ctx.stroke(p.path);
     }
+    if (p.segments) {
+      ctx.strokeStyle = SEGMENT_COLOR;
+      ctx.lineWidth = 1.4 * px;
+      ctx.stroke(p.segments);
+    }
+    this.#drawDots(p.points, 0, SEGMENT_COLOR, 1.6);
   }
 
   // Steiner points are the vertices past the input's: the mesher keeps input vertex i at i.
@@ -466,8 +552,27 @@ function mix(alpha) {
 // is drawn once: half-edge a->b when a < b, and b->a when it has no twin (a boundary edge
 // walked the other way); it goes to the tile of the triangle that holds it.
 const TILE_TRIANGLES = 4000;
+const STEP = 4096;  // triangles (or edges) between the builders' yields
 
-function buildTiles(p, t, cls) {
+// Everything a mesh is drawn from: its tiles, mean edge length, segments' path and shortest
+// edge per vertex. A generator that yields every STEP triangles (setMesh runs it in slices);
+// finish() runs it through.
+function* meshPaths(p, t, cls, seg) {
+  const tiles = yield* buildTiles(p, t, cls);
+  let sum = 0, count = 0;
+  for (const tile of tiles) { sum += tile.edgeSum; count += tile.edgeCount; }
+  const shortest = yield* shortestEdges(p, t);
+  return { tiles, meanEdge: count ? sum / count : 0, segments: segmentPath(p, seg), shortest };
+}
+
+function finish(generator) {
+  for (;;) {
+    const r = generator.next();
+    if (r.done) return r.value;
+  }
+}
+
+function* buildTiles(p, t, cls) {
   const T = t.length / 3;
   const b = boundsOf(p, t);
   const g = Math.max(1, Math.round(Math.sqrt(T / TILE_TRIANGLES)));
@@ -482,8 +587,10 @@ function buildTiles(p, t, cls) {
       const a = t[i + k], c = t[i + (k + 1) % 3];
       if (a < c) forward.add(a * n + c);
     }
+    if (i % (3 * STEP) === 0) yield;
   }
   for (let i = 0; i < T; i++) {
+    if (i % STEP === 0) yield;
     const a = 2 * t[3 * i], bb = 2 * t[3 * i + 1], c = 2 * t[3 * i + 2];
     const cx = (p[a] + p[bb] + p[c]) / 3, cy = (p[a + 1] + p[bb + 1] + p[c + 1]) / 3;
     const col = Math.min(g - 1, Math.floor((cx - b.x0) / w)), row = Math.min(g - 1, Math.floor((cy - b.y0) / h));
@@ -509,9 +616,10 @@ function buildTiles(p, t, cls) {
 }
 
 // Per vertex, the length of its shortest edge in the mesh (Infinity for an unused vertex).
-function shortestEdges(p, t) {
+function* shortestEdges(p, t) {
   const out = new Float64Array(p.length / 2).fill(Infinity);
   for (let i = 0; i < t.length; i += 3) {
+    if (i % (3 * STEP) === 0) yield;
     for (let k = 0; k < 3; k++) {
       const a = t[i + k], b = t[i + (k + 1) % 3];
       const d = Math.hypot(p[2 * a] - p[2 * b], p[2 * a + 1] - p[2 * b + 1]);

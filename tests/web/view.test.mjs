@@ -10,9 +10,19 @@ import { root, artifacts, pageSession, openPage, waitForRun, result, runAndWait 
 
 const { open, url, browser } = pageSession({ firstRunTimeout: 60000 });
 
-// After the next two frames: the share of the canvas in the Steiner dots' colour, and the
-// dots drawn as [count, smallest radius, largest radius] in CSS pixels.
-function steinerDots(page) {
+// Until the mesh is on the canvas and its frame is whole (a large one is built and drawn in
+// slices, between frames).
+function drawn(page) {
+  return page.waitForFunction(() => {
+    const c = document.getElementById('view');
+    return c.dataset.content === 'mesh' && c.dataset.frame === 'done';
+  });
+}
+
+// Once the frame is whole: the share of the canvas in the Steiner dots' colour, and the dots
+// drawn as [count, smallest radius, largest radius] in CSS pixels.
+async function steinerDots(page) {
+  await drawn(page);
   return page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(() => {
     const c = document.getElementById('view');
     const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
@@ -25,7 +35,8 @@ function steinerDots(page) {
 async function zoomIn(page, presses) {
   await page.focus('[data-testid=mesh-canvas]');
   for (let i = 0; i < presses; i++) await page.keyboard.press('+');
-  await page.waitForTimeout(400);  // the full frame after the gesture
+  await page.waitForTimeout(400);  // the gesture is over: the full frame starts
+  await drawn(page);
 }
 
 test('Steiner dots are sized by their triangles and the zoom: they never swamp a dense mesh', async () => {
@@ -50,6 +61,69 @@ test('Steiner dots are sized by their triangles and the zoom: they never swamp a
   assert.ok(zoomed.dots[2] <= 3, `largest dot ${zoomed.dots[2]} px`);
   assert.deepEqual(coarse.errors, []);
   await coarse.context.close();
+});
+
+test('a large mesh arrives in slices: the page answers meanwhile, the picture ends whole, newer input wins', async () => {
+  const { page, errors, context } = await open('?sample=turkey&mode=quality&maxArea=12');
+  await drawn(page);
+  // What the canvas says it shows, and the longest gap of a 10 ms timer, while Mesh runs again.
+  const watch = () => page.evaluate(() => {
+    const c = document.getElementById('view');
+    window.shown = [];
+    window.longestGap = 0;
+    let last = performance.now();
+    window.ticker = setInterval(() => {
+      const now = performance.now();
+      window.longestGap = Math.max(window.longestGap, now - last);
+      last = now;
+    }, 10);
+    const note = () => {
+      const state = `${c.dataset.content}/${c.dataset.frame}`;
+      if (window.shown.at(-1) !== state) window.shown.push(state);
+      if (window.onShown) window.onShown(state);
+    };
+    new MutationObserver(note).observe(c, { attributes: true, attributeFilter: ['data-content', 'data-frame'] });
+  });
+  await watch();
+  const triangles = (await runAndWait(page)).triangles;
+  assert.ok(triangles > 50000, `${triangles} triangles: not a large mesh`);
+  await drawn(page);
+  const { shown, gap } = await page.evaluate(() => ({ shown: window.shown, gap: window.longestGap }));
+  const since = shown.slice(shown.indexOf('building/done'));
+  assert.ok(since.length > 1 && since.includes('mesh/drawing') && since.at(-1) === 'mesh/done' &&
+    since.slice(1).every((x) => ['building/drawing', 'mesh/drawing', 'mesh/done'].includes(x)),
+  `the canvas went through ${shown.join(' -> ')}`);
+  // A picture of the whole mesh: triangle colours over most of the turkey's frame.
+  const coloured = await page.evaluate(() => {
+    const c = document.getElementById('view');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) n += d[i] + d[i + 1] + d[i + 2] < 3 * 250;
+    return n / (d.length / 4);
+  });
+  assert.ok(coloured > 0.2, `${(100 * coloured).toFixed(1)}% of the canvas drawn`);
+  console.log(`# ${triangles} triangles arrived in slices; a 10 ms timer's longest gap ${gap.toFixed(0)} ms`);
+  // Another sample chosen while the mesh is being built: its preview stays, the mesh never
+  // comes back.
+  await page.evaluate(() => {
+    window.shown = [];
+    window.onShown = (state) => {
+      if (state !== 'building/done') return;
+      window.onShown = null;
+      const sample = document.getElementById('sample');
+      sample.value = 'italy';
+      sample.dispatchEvent(new Event('change'));
+    };
+  });
+  await page.click('[data-testid=run-button]');
+  await page.waitForFunction(() => /Press Mesh\./.test(document.getElementById('source').textContent), null, { timeout: 60000 });
+  await page.waitForTimeout(1500);  // what a build left running would have shown by now
+  const after = await page.evaluate(() => window.shown);
+  assert.equal(after.at(-1).split('/')[0], 'preview', `the canvas went through ${after.join(' -> ')}`);
+  assert.ok(after.includes('building/done') && !after.includes('mesh/drawing'),
+    `the mesh being built was drawn after all: ${after.join(' -> ')}`);
+  assert.deepEqual(errors, []);
+  await context.close();
 });
 
 test('fit frames the main part: South Africa, not the Prince Edward Islands 1,700 km away', async () => {
