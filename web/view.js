@@ -8,7 +8,8 @@
 // redraw the last full frame as a bitmap, scaled and shifted, and the full frame follows when
 // the gesture pauses: panning stays smooth and the picture is sharp again at rest. A large mesh
 // (over LARGE_MESH triangles) is turned into paths and drawn a slice of SLICE_MS at a time,
-// between frames, so that the page keeps answering while it arrives.
+// between frames, into a second canvas that is shown once the frame is whole, so that the page
+// keeps answering while it arrives and the picture before it stays meanwhile.
 import { CLASSES } from './angles.js';
 
 const SEGMENT_COLOR = '#111';
@@ -41,6 +42,7 @@ export class MeshView {
     this.probe = Object.assign(document.createElement('canvas'), { width: 1, height: 1 })
       .getContext('2d', { willReadFrequently: true });
     this.cache = document.createElement('canvas');
+    this.back = document.createElement('canvas');  // a frame being drawn in slices
     this.cacheXform = null;
     this.interacting = false;
     this.settleTimer = 0;
@@ -166,8 +168,8 @@ export class MeshView {
     else if (this.mesh && this.mesh.triangles.length / 3 > LARGE_MESH) return this.#drawInSlices();
     else {
       const t0 = performance.now();
-      for (const op of this.#frameOps()) op();
-      this.#raster();
+      for (const op of this.#frameOps(this.ctx)) op();
+      this.#raster(this.canvas);
       this.#frameDrawn(performance.now() - t0);
       return;
     }
@@ -179,8 +181,8 @@ export class MeshView {
   // forces the raster now, so a time taken after it is what the drawing really cost. The copy
   // goes to a 1-pixel canvas made for reading: reading the view itself every frame would make
   // the browser warn (and move the view to a slower, readable canvas).
-  #raster() {
-    this.probe.drawImage(this.canvas, 0, 0, 1, 1, 0, 0, 1, 1);
+  #raster(canvas) {
+    this.probe.drawImage(canvas, 0, 0, 1, 1, 0, 0, 1, 1);
     this.probe.getImageData(0, 0, 1, 1);
   }
 
@@ -199,20 +201,31 @@ export class MeshView {
     this.overlay(this.ctx, this);
   }
 
-  // A large mesh's frame: its drawing steps run until SLICE_MS is spent, the rest in the next
-  // animation frames (fills, then edges, then segments and dots, as in one go). A new frame
-  // asked for meanwhile starts over.
+  // A large mesh's frame: its drawing steps run on the back canvas until SLICE_MS is spent, the
+  // rest in the next animation frames (fills, then edges, then segments and dots, as in one
+  // go); the whole frame is then copied to the view. A new frame asked for meanwhile starts over.
   #drawInSlices() {
-    const job = { ops: this.#frameOps(), next: 0, busyMs: 0 };
+    const back = this.back;
+    if (back.width !== this.canvas.width || back.height !== this.canvas.height) {
+      back.width = this.canvas.width;
+      back.height = this.canvas.height;
+    }
+    const ctx = back.getContext('2d');
+    const job = { ops: this.#frameOps(ctx), next: 0, busyMs: 0 };
     this.drawJob = job;
     this.canvas.dataset.frame = 'drawing';
     const slice = () => {
       if (this.drawJob !== job) return;
       const t0 = performance.now();
-      this.#worldTransform();
+      this.#worldTransform(ctx);
       while (job.next < job.ops.length && performance.now() - t0 < SLICE_MS) {
         job.ops[job.next++]();
-        this.#raster();
+        this.#raster(back);
+      }
+      if (job.next === job.ops.length) {
+        this.ctx.setTransform(1, 0, 0, 1, 0, 0);
+        this.ctx.drawImage(back, 0, 0);
+        this.#raster(this.canvas);
       }
       job.busyMs += performance.now() - t0;
       if (job.next < job.ops.length) return void requestAnimationFrame(slice);
@@ -223,20 +236,20 @@ export class MeshView {
   }
 
   // World -> device pixels, y up.
-  #worldTransform() {
-    const { ctx, dpr, s } = this;
+  #worldTransform(ctx) {
+    const { dpr, s } = this;
     ctx.setTransform(dpr * s, 0, 0, -dpr * s, dpr * this.tx, dpr * this.ty);
     ctx.lineJoin = 'round';
   }
 
-  // The steps that draw a full frame, in order.
-  #frameOps() {
-    const { ctx, s } = this;
+  // The steps that draw a full frame on ctx (the view's or the back canvas'), in order.
+  #frameOps(ctx) {
+    const { s } = this;
     const ops = [() => {
       ctx.setTransform(1, 0, 0, 1, 0, 0);
       ctx.fillStyle = BG;
       ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
-      this.#worldTransform();
+      this.#worldTransform(ctx);
     }];
     const px = 1 / s;  // one CSS pixel in world units
     if (this.mesh) {
@@ -264,13 +277,12 @@ export class MeshView {
         ctx.lineWidth = 1.6 * px;
         ctx.stroke(m.segments);
       });
-      if (this.showSteiner) ops.push(() => this.#drawSteiner());
-    } else if (this.preview) ops.push(() => this.#drawPreview(px));
+      if (this.showSteiner) ops.push(() => this.#drawSteiner(ctx));
+    } else if (this.preview) ops.push(() => this.#drawPreview(ctx, px));
     return ops;
   }
 
-  #drawPreview(px) {
-    const { ctx } = this;
+  #drawPreview(ctx, px) {
     const p = this.preview;
     if (p.path) {
       ctx.fillStyle = 'rgba(31,111,178,.12)';
@@ -284,24 +296,24 @@ export class MeshView {
       ctx.lineWidth = 1.4 * px;
       ctx.stroke(p.segments);
     }
-    this.#drawDots(p.points, 0, SEGMENT_COLOR, 1.6);
+    this.#drawDots(ctx, p.points, 0, SEGMENT_COLOR, 1.6);
   }
 
   // Steiner points are the vertices past the input's: the mesher keeps input vertex i at i.
   // Each dot is sized by its shortest edge on screen, so it never covers its triangles (dense
   // parts show none until zoomed in) and grows with the zoom up to STEINER_MAX_PX.
-  #drawSteiner() {
+  #drawSteiner(ctx) {
     const { points, nInput, shortest } = this.mesh;
     const s = this.s;
-    const drawn = this.#drawDots(points, nInput, STEINER_COLOR,
+    const drawn = this.#drawDots(ctx, points, nInput, STEINER_COLOR,
       (v) => (Number.isFinite(shortest[v]) ? Math.min(STEINER_MAX_PX, STEINER_SHARE * shortest[v] * s) : 0));
     this.canvas.dataset.steiner = drawn.join(',');
   }
 
   // Dots of radius r(vertex) in CSS pixels (none below DOT_MIN_PX); returns [count, smallest
   // radius, largest radius] of those drawn.
-  #drawDots(points, first, color, r) {
-    const { ctx, dpr, s, tx, ty, w, h } = this;
+  #drawDots(ctx, points, first, color, r) {
+    const { dpr, s, tx, ty, w, h } = this;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     const path = new Path2D();
     let n = 0, rMin = Infinity, rMax = 0;
