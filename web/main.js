@@ -358,12 +358,15 @@ async function run() {
     const options = meshOptions();
     const m = await meshInWorker(pslg, options, {
       signal: controller.signal,
-      // Refinement reports an estimated fraction that only grows; a phase that does not know
-      // its end (fraction -1) leaves the bar indeterminate, the vertex count showing work.
+      // Refinement ("refine", "improve") reports one estimated fraction of the whole run that
+      // only grows; the other phases report their own ends (1.0 at the end of the Delaunay
+      // triangulation, of the segments...), which are not the run's: they, and a fraction not
+      // known (-1), leave the bar indeterminate, the vertex count showing work.
       onProgress: (p) => {
         if (running !== controller || !p) return;
-        if (p.fraction >= 0) ui.progress.value = Math.min(1, p.fraction);
-        else ui.progress.removeAttribute('value');
+        const refining = p.phase === 'refine' || p.phase === 'improve';
+        if (refining && p.fraction >= 0) ui.progress.value = Math.min(1, p.fraction);
+        else if (!refining) ui.progress.removeAttribute('value');
         setStatus(`Meshing… ${p.phase}${p.vertices ? `, ${p.vertices.toLocaleString('en')} vertices` : ''}`);
       },
     });

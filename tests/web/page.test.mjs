@@ -393,6 +393,25 @@ test('Cancel stops a long run; the page keeps responding and meshes again afterw
   await context.close();
 });
 
+test('the progress bar only grows while a run goes (the phases before refinement leave it indeterminate)', async () => {
+  const { page, errors, context } = await open('?sample=turkey&mode=acute');
+  // Every value the bar takes (-1: indeterminate), seen by an observer, not by sampling.
+  await page.evaluate(() => {
+    const bar = document.getElementById('progress');
+    window.barValues = [];
+    new MutationObserver(() => {
+      window.barValues.push(bar.hasAttribute('value') ? bar.value : -1);
+    }).observe(bar, { attributes: true, attributeFilter: ['value'] });
+  });
+  await runAndWait(page);
+  const values = await page.evaluate(() => window.barValues);
+  const shown = values.filter((v) => v >= 0);
+  assert.ok(shown.length >= 2, `the bar took ${values.length} values: ${values}`);
+  shown.forEach((v, i) => assert.ok(i === 0 || v >= shown[i - 1], `the bar went back from ${shown[i - 1]} to ${v}: ${values}`));
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a 100,000-triangle mesh pans and zooms smoothly', async () => {
   // Turkey refined for quality under an area bound (km^2): about 100,000 triangles.
   const { page, errors, context } = await open('?sample=turkey&mode=quality&maxArea=12');
