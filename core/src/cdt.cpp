@@ -3,8 +3,10 @@
 // Each input segment is inserted as a chain of fixed edges. Walking from one end toward the
 // other, every decision is an exact orientation test: a vertex exactly on the segment splits
 // it there, an already fixed edge crossed by it yields a new vertex at the crossing (both
-// segments then pass through that vertex), and otherwise the crossed edges are flipped away
-// (Sloan's method) and Delaunay is restored with Lawson flips around the new fixed edge.
+// segments then pass through that vertex), and otherwise the triangles it crosses give way to
+// the constrained Delaunay triangulations of its two sides (Triangulation::
+// insertEdgeThroughCavity), or, where a side is not a simple chain, the crossed edges are
+// flipped away (Sloan's method) and Delaunay is restored with Lawson flips.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -71,7 +73,7 @@ class SegmentInserter {
   bool splitAtCrossing(const Piece& piece, uint32_t crossed);
   uint32_t nearbyCrossing(const double* p, double scale, uint32_t t,
                           std::initializer_list<uint32_t> ends) const;
-  bool flipAway(uint32_t u, uint32_t end, const Piece& piece, std::vector<uint32_t>& crossedEdges);
+  bool joinAcross(uint32_t u, uint32_t end, const Piece& piece, std::vector<uint32_t>& crossedEdges);
 
   Triangulation& T_;
   const Pslg& input_;
@@ -80,7 +82,7 @@ class SegmentInserter {
   uint32_t inputCount_;  // store vertices below this are input vertices, exact
   std::vector<uint32_t> representative_;
   std::vector<Piece> todo_;
-  // flipAway's queue: crossed edges by their ends, with the half-edge last seen for them.
+  // joinAcross's queue: crossed edges by their ends, with the half-edge last seen for them.
   struct Crossed {
     uint32_t w, x, e;
   };
@@ -204,11 +206,12 @@ bool SegmentInserter::splitAtCrossing(const Piece& piece, uint32_t crossed) {
   return true;
 }
 
-// Flips the edges crossed by u->end until none is left (Sloan 1993: a crossed edge whose
-// quadrilateral is convex can always be flipped, and one always is), fixes the edge u-end,
-// then restores the Delaunay property around the new edges.
-bool SegmentInserter::flipAway(uint32_t u, uint32_t end, const Piece& piece,
-                               std::vector<uint32_t>& crossedEdges) {
+// Makes u-end a fixed edge: the crossed triangles replaced by the triangulations of its two
+// sides, or where the cavity cannot take it, the edges crossed flipped until none is left
+// (Sloan 1993: a crossed edge whose quadrilateral is convex can always be flipped, and one
+// always is), then the Delaunay property restored around the new edges.
+bool SegmentInserter::joinAcross(uint32_t u, uint32_t end, const Piece& piece,
+                                 std::vector<uint32_t>& crossedEdges) {
   const uint32_t edge = T_.insertEdgeThroughCavity(u, end, crossedEdges);
   if (edge != kNone) {
     T_.fixEdge(edge, piece.dir, piece.seg);
@@ -315,7 +318,7 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
       h = o > 0 ? next(g) : prev(g);
     }
     if (split) continue;
-    if (!flipAway(u, end, piece, crossedEdges))
+    if (!joinAcross(u, end, piece, crossedEdges))
       return {Status::BadInput, "internal: segment piece " + std::to_string(u) + "-" +
                                     std::to_string(end) + " missing after flips"};
     if (end != v) todo_.push_back({end, v, piece.dir, piece.seg});

@@ -349,8 +349,6 @@ uint32_t Triangulation::insertEdgeThroughCavity(uint32_t u, uint32_t w,
   // Side 0 runs left of u->w, side 1 right of it; both chains from u to w. A side's old edges
   // are the cavity triangles' half-edges along it: on the left from the later vertex to the
   // earlier, on the right from the earlier to the later.
-  if (chainStamp_.size() < vertexCount()) chainStamp_.resize(vertexCount(), 0);
-  if (++stamp_ == 0) std::fill(chainStamp_.begin(), chainStamp_.end(), 0), stamp_ = 1;
   std::vector<uint32_t>& left = chains_[0];
   std::vector<uint32_t>& right = chains_[1];
   left.assign(1, u), right.assign(1, u);
@@ -358,11 +356,9 @@ uint32_t Triangulation::insertEdgeThroughCavity(uint32_t u, uint32_t w,
   auto add = [&](int side, uint32_t v, uint32_t e) {
     std::vector<uint32_t>& chain = chains_[side];
     if (chain.back() == v) return true;  // a fan around v: still the same vertex
-    if (chain.size() > kCavityChain) return false;
-    if (v != w) {  // (w ends both chains)
-      if (chainStamp_[v] == stamp_) return false;
-      chainStamp_[v] = stamp_;
-    }
+    // (A linear search: filling the side is quadratic in its length anyway.)
+    if (chain.size() > kCavityChain || std::find(chain.begin(), chain.end(), v) != chain.end())
+      return false;
     chain.push_back(v);
     sides_[side].push_back(attr(e));
     return true;

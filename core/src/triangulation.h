@@ -190,11 +190,9 @@ class Triangulation {
   std::vector<uint32_t> freeSlots_;
   std::vector<uint32_t> scratch_;
   std::vector<uint32_t> ring_;  // removeVertex, removeFromSegment: the link of the vertex
-  // insertEdgeThroughCavity's scratch: each side's chain and old edges, the cavity's
-  // triangles, and per vertex the call that last put it in a chain.
-  std::vector<uint32_t> chains_[2], cavity_, chainStamp_;
+  // insertEdgeThroughCavity's scratch: each side's chain and old edges, the cavity's triangles.
+  std::vector<uint32_t> chains_[2], cavity_;
   std::vector<EdgeAttr> sides_[2];
-  uint32_t stamp_ = 0;
   mutable uint32_t rng_ = 2463534242u;
 };
 
