@@ -206,11 +206,7 @@ export class MeshView {
   // go); the whole frame is then copied to the view. A new frame asked for meanwhile starts over.
   #drawInSlices() {
     const back = this.back;
-    if (back.width !== this.canvas.width || back.height !== this.canvas.height) {
-      back.width = this.canvas.width;
-      back.height = this.canvas.height;
-    }
-    const ctx = back.getContext('2d');
+    const ctx = this.#sizedLikeView(back);
     const job = { ops: this.#frameOps(ctx), next: 0, busyMs: 0 };
     this.drawJob = job;
     this.canvas.dataset.frame = 'drawing';
@@ -332,13 +328,18 @@ export class MeshView {
     return n ? [n, +rMin.toFixed(3), +rMax.toFixed(3)] : [0, 0, 0];
   }
 
-  #storeCache() {
-    const c = this.cache;
+  // The context of canvas c (the cache, the back canvas) once c has the view's size in device
+  // pixels.
+  #sizedLikeView(c) {
     if (c.width !== this.canvas.width || c.height !== this.canvas.height) {
       c.width = this.canvas.width;
       c.height = this.canvas.height;
     }
-    const cctx = c.getContext('2d');
+    return c.getContext('2d');
+  }
+
+  #storeCache() {
+    const cctx = this.#sizedLikeView(this.cache);
     cctx.setTransform(1, 0, 0, 1, 0, 0);
     cctx.drawImage(this.canvas, 0, 0);
     this.cacheXform = { s: this.s, tx: this.tx, ty: this.ty };
