@@ -263,9 +263,7 @@ void Triangulation::flip(uint32_t e) {
   setAttr(3 * t0 + 1, ad);
   setAttr(3 * t1, db);
   setAttr(3 * t1 + 1, bc);
-  setAttr(3 * t0 + 2, kPlain, false);
-  setAttr(3 * t1 + 2, kPlain, false);
-  link(3 * t0 + 2, 3 * t1 + 2);
+  linkPlain(3 * t0 + 2, 3 * t1 + 2);
 }
 
 void Triangulation::legalizeFrom(uint32_t v, std::vector<uint32_t>& stack) {
@@ -382,9 +380,7 @@ uint32_t Triangulation::insertEdgeThroughCavity(uint32_t u, uint32_t w,
   std::reverse(sides_[1].begin(), sides_[1].end());
   const uint32_t e = fillPseudoPolygon(left.data(), sides_[0].data(), 0, left.size() - 1);
   const uint32_t f = fillPseudoPolygon(right.data(), sides_[1].data(), 0, right.size() - 1);
-  setAttr(e, kPlain, false);
-  setAttr(f, kPlain, false);
-  link(e, f);
+  linkPlain(e, f);
   return e;
 }
 
@@ -399,10 +395,7 @@ uint32_t Triangulation::fillPseudoPolygon(const uint32_t* chain, const EdgeAttr*
   const uint32_t e = 3 * t;  // chain[lo]->chain[hi]; then chain[hi]->apex, apex->chain[lo]
   auto side = [&](uint32_t edge, size_t from, size_t to) {
     if (to == from + 1) return setAttr(edge, sides[from]);
-    const uint32_t inner = fillPseudoPolygon(chain, sides, from, to);
-    setAttr(edge, kPlain, false);
-    setAttr(inner, kPlain, false);
-    link(edge, inner);
+    linkPlain(edge, fillPseudoPolygon(chain, sides, from, to));
   };
   side(e + 1, k, hi);
   side(e + 2, lo, k);

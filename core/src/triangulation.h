@@ -171,6 +171,12 @@ class Triangulation {
     if (trackSegments) segment[e] = a.segment;
   }
   static constexpr EdgeAttr kPlain = {kNone, 0, 0, kNone};
+  // Makes e and f twins of a new, plain (unfixed) edge.
+  void linkPlain(uint32_t e, uint32_t f) {
+    setAttr(e, kPlain, false);
+    setAttr(f, kPlain, false);
+    link(e, f);
+  }
   // insertEdgeThroughCavity's: one side's triangles over chain[lo..hi], the side left of
   // chain[lo]->chain[hi]; sides[i] is what the old edge between chain[i] and chain[i+1] carried.
   // Returns the new half-edge chain[lo]->chain[hi].
