@@ -43,6 +43,15 @@ enum class FillRule {
   NonZero,   // keep regions whose winding number is non-zero
 };
 
+// A region of the domain (Triangle's regional attributes): every triangle reachable from the
+// point (x, y) without crossing a segment. A later region reaching the same triangles wins,
+// as in Triangle. A point outside the domain is ignored (with a warning).
+struct Region {
+  double x = 0, y = 0;
+  double attribute = 0;  // given to the region's triangles (Mesh::triangleAttributes)
+  double maxArea = 0;    // area bound inside the region (0 = none); Options::maxArea still holds
+};
+
 // A planar straight-line graph. Segments may cross, overlap, touch vertices or have zero
 // length: mesh() resolves all of these (see Stats::warnings).
 struct Pslg {
@@ -50,6 +59,11 @@ struct Pslg {
   std::vector<uint32_t> segments;  // a, b per segment (directed a->b: matters for NonZero)
   std::vector<double> holes;       // x, y per hole seed point (FillRule::Triangle only;
                                    // the other rules find holes by nesting)
+  // Boundary markers (Triangle's): empty, or one per vertex / per segment. They come back in
+  // Mesh::vertexMarkers and Mesh::segmentMarkers.
+  std::vector<int32_t> vertexMarkers;
+  std::vector<int32_t> segmentMarkers;
+  std::vector<Region> regions;
 
   size_t vertexCount() const { return points.size() / 2; }
   size_t segmentCount() const { return segments.size() / 2; }
@@ -63,6 +77,28 @@ struct Progress {
 
 // Quality mode's minimum angle when neither minAngle nor maxArea is given (Triangle's -q).
 constexpr double kQualityDefaultMinAngle = 20.0;
+
+// The size of the mesh's edges over the plane: h(x, y) is the longest an edge may be near
+// (x, y) (a triangle is too large when its longest edge exceeds h at its centroid). Every
+// source given counts; where several do, the smallest size holds. Sizes must be positive
+// (+infinity: no bound there).
+struct SizeField {
+  // Called from the threads refinement runs on (Options::threads): it must be safe to call
+  // concurrently, and should be cheap (it is called for every triangle refinement looks at).
+  std::function<double(double x, double y)> function;
+  // A grid of sizes: h[i + nx * j] at (x0 + i * dx, y0 + j * dy), bilinear in between, the
+  // nearest border value outside. nx, ny >= 1; dx, dy > 0 (or any, for a single row/column).
+  struct Grid {
+    double x0 = 0, y0 = 0, dx = 1, dy = 1;
+    uint32_t nx = 0, ny = 0;
+    std::vector<double> h;
+  } grid;
+  // Sizes at scattered points (x, y per point in `points`, one size each in `sizes`): linear
+  // over the points' Delaunay triangulation, the nearest hull edge's value outside it.
+  std::vector<double> points, sizes;
+
+  bool empty() const { return !function && grid.h.empty() && sizes.empty(); }
+};
 
 // Options::maxAngle for "the lowest bound the run can certify" (acute mode only; the CLI's
 // --max-angle auto). Stats::angleBound says what was reached.
@@ -78,7 +114,15 @@ struct Options {
   // BadInput).
   double maxAngle = 90.0;
   double minAngle = 0.0;          // degrees, quality target (0 = none; see kQualityDefaultMinAngle)
-  double maxArea = 0.0;           // area bound (0 = none)
+  double maxArea = 0.0;           // area bound (0 = none); Region::maxArea bounds a region's
+  double maxEdge = 0.0;           // longest edge allowed (0 = none), in every refinement mode
+  SizeField size;                 // edge sizes over the plane (refinement modes)
+  // How fast sizes may grow with distance: |grad h| <= grading (JIGSAW's gradient limit;
+  // 0.2-0.5 is usual; 0 = no limit). It limits the size field and maxEdge, not the sizes the
+  // geometry forces (refinement grades those by itself).
+  double grading = 0.0;
+  // Fill Mesh::adjacency (twins, neighbours, edges, the boundary loops).
+  bool adjacency = false;
   uint32_t maxSteiner = 0;        // Steiner point budget (0 = automatic: 50 per input vertex,
                                   // at least 20000, plus room for the area bound)
   double timeLimit = 0.0;         // seconds (0 = unlimited)
@@ -113,12 +157,37 @@ struct ExactPoint {
   std::string x, y;
 };
 
+// How a mesh's triangles connect (Options::adjacency, or adjacency(mesh)). Half-edge
+// 3t + k runs from corner k of triangle t to corner (k + 1) % 3 (Delaunator's convention).
+struct Adjacency {
+  std::vector<int32_t> halfedges;   // per half-edge: its twin, -1 on the mesh's boundary
+  std::vector<int32_t> neighbors;   // 3 per triangle: the one opposite corner k, -1 none
+  std::vector<uint32_t> edges;      // a, b (a < b) per undirected edge, sorted
+  // Per edge: the marker of the input segment it lies on; 0 inside the mesh, and on the
+  // boundary a zero marker becomes 1 (Triangle's rule).
+  std::vector<int32_t> edgeMarkers;
+  // The boundary as closed loops of vertices, the mesh on each loop's left (outer boundaries
+  // counter-clockwise, holes clockwise): loop i is hull[hullStarts[i] .. hullStarts[i+1]).
+  std::vector<uint32_t> hull, hullStarts;
+};
+
 struct Mesh {
   std::vector<double> points;       // x, y per vertex; input vertices first, at their indices
   std::vector<uint32_t> triangles;  // a, b, c per triangle, counter-clockwise
   std::vector<uint32_t> segments;   // a, b per mesh edge lying on an input segment
+  std::vector<uint32_t> segmentInput;   // per mesh segment edge: the input segment it lies on
   std::vector<uint8_t> vertexKind;  // per vertex: see VertexKind
+  // Boundary markers (Triangle's rule): a vertex keeps its input marker; a Steiner point on a
+  // segment, and an input vertex with marker 0 on a segment with one, take the segment's
+  // (the lowest-numbered such segment's); a zero marker on the mesh's boundary becomes 1.
+  std::vector<int32_t> vertexMarkers;   // per vertex
+  std::vector<int32_t> segmentMarkers;  // per mesh segment edge: its input segment's marker,
+                                        // a zero one on the boundary 1
+  // Per triangle: the attribute of its region (Pslg::regions; 0 outside every region). Empty
+  // when the input has no regions.
+  std::vector<double> triangleAttributes;
   std::vector<ExactPoint> exactPoints;  // by vertex; empty unless Options::exactFeet
+  Adjacency adjacency;                  // empty unless Options::adjacency
 
   size_t vertexCount() const { return points.size() / 2; }
   size_t triangleCount() const { return triangles.size() / 3; }
@@ -147,6 +216,10 @@ struct Stats {
   uint32_t nonAcute = 0;            // triangles with a corner >= 90 degrees (exact)
   uint32_t obtuse = 0;              // triangles with a corner > 90 degrees (exact)
   bool targetMet = true;            // refinement modes: every triangle meets the target
+  // With a size bound (maxEdge, size, a region's maxArea): the largest ratio over the triangles
+  // of the longest edge to the size at the centroid (area bounds as sqrt(area / bound)); at
+  // most 1 when every size is met. 0 without one.
+  double sizeRatio = 0;
   // Checked exactly, for the doubles of the mesh: acute, every angle < angleBound; non-obtuse,
   // every angle <= 90.
   bool certified = false;
@@ -184,6 +257,9 @@ struct Result {
 
 // Triangulates `input` as `options.mode` says.
 Result mesh(const Pslg& input, const Options& options = {});
+
+// The adjacency of any mesh (as Options::adjacency fills it): markers from mesh.segmentMarkers.
+Adjacency adjacency(const Mesh& mesh);
 
 struct Validation {
   bool ok = true;
