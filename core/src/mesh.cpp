@@ -710,10 +710,17 @@ Result meshScaled(const Pslg& input, const Options& options) {
 // Nothing throws, as promised in acutemesh.h: memory running out (an area bound or a Steiner
 // budget far beyond what fits, a huge input) ends the call with a message instead. Builds
 // without exceptions (Emscripten's default) abort on it instead.
+namespace {
+Result withAdjacency(Result r, const Options& options) {
+  if (options.adjacency) r.mesh.adjacency = adjacency(r.mesh);
+  return r;
+}
+}  // namespace
+
 Result mesh(const Pslg& input, const Options& options) {
 #if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
   try {
-    return meshScaled(input, options);
+    return withAdjacency(meshScaled(input, options), options);
   } catch (const std::bad_alloc&) {
   } catch (const std::length_error&) {
   }
@@ -726,7 +733,7 @@ Result mesh(const Pslg& input, const Options& options) {
   r.stats.inputHoles = uint32_t(input.holes.size() / 2);
   return r;
 #else
-  return meshScaled(input, options);
+  return withAdjacency(meshScaled(input, options), options);
 #endif
 }
 

@@ -77,7 +77,9 @@ std::vector<double> holePoints(const Mesh& m, const std::vector<uint64_t>& edges
   options.mode = Mode::Cdt;
   options.convexHull = true;
   options.threads = 1;
-  const Result r = mesh(Pslg{m.points, boundary, {}}, options);
+  Pslg outline;
+  outline.points = m.points, outline.segments = boundary;
+  const Result r = mesh(outline, options);
   if (r.status != Status::Ok) return {};
   const std::vector<uint32_t>& tri = r.mesh.triangles;
   const std::vector<double>& p = r.mesh.points;
