@@ -2,6 +2,7 @@
 #include "arguments.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string_view>
 
@@ -30,7 +31,8 @@ std::string choices(const Entry (&table)[N]) {
 
 bool takesValue(const std::string& a) {
   for (const char* option : {"-o", "--output", "--format", "--mode", "--max-angle", "--min-angle",
-                             "--max-area", "--max-steiner", "--fill", "--threads", "--time-limit"})
+                             "--max-area", "--max-edge", "--size", "--grading", "--max-steiner",
+                             "--fill", "--threads", "--time-limit"})
     if (a == option) return true;
   return false;
 }
@@ -45,6 +47,7 @@ std::string missingValue(const std::string& a) {
   if (a == "--threads") return "--threads needs a count";
   if (a == "--time-limit") return "--time-limit needs seconds";
   if (a == "--max-angle") return "--max-angle needs a number or auto";
+  if (a == "--size") return "--size needs a size file (.json: a grid or points with sizes)";
   return a + " needs a number";
 }
 
@@ -75,6 +78,9 @@ std::string readBound(const std::string& a, const std::string& v, Options& opt) 
   } else if (a == "--min-angle") {
     if (!(x < 60)) return "--min-angle must be below 60";
     opt.minAngle = x;
+  } else if (a == "--max-edge" || a == "--grading") {
+    if (!std::isfinite(x)) return a + " needs a finite number >= 0, not '" + v + "'";
+    (a == "--max-edge" ? opt.maxEdge : opt.grading) = x;
   } else {
     opt.maxArea = x;
   }
@@ -110,6 +116,8 @@ std::string readValue(const std::string& a, const std::string& v, Arguments& arg
   } else if (a == "--fill") {
     if (!parseName(v, opt.fill, &message)) return message;
     args.chosen.fill = true;
+  } else if (a == "--size") {
+    args.sizeFile = v;
   } else if (a == "--max-steiner" || a == "--threads") {
     return readCount(a, v, opt);
   } else if (a == "--time-limit") {
@@ -141,8 +149,8 @@ bool readFlag(const std::string& a, Arguments& args) {
   return true;
 }
 
-// A refinement target says which mode it is for: --max-angle alone means acute, --min-angle or
-// --max-area alone quality (as Triangle's -q and -a switch refinement on). A mode that has no
+// A refinement target says which mode it is for: --max-angle alone means acute, --min-angle,
+// --max-area or a size alone quality (as Triangle's -q and -a switch refinement on). A mode that has no
 // use for a target given with it is an error rather than a target silently ignored.
 std::string modeForTargets(bool modeGiven, bool maxAngle, bool quality, Mode& mode) {
   if (!modeGiven) {
@@ -152,7 +160,7 @@ std::string modeForTargets(bool modeGiven, bool maxAngle, bool quality, Mode& mo
   }
   const std::string name = std::string(nameOf(mode));
   if ((mode == Mode::Delaunay || mode == Mode::Cdt) && (maxAngle || quality))
-    return std::string(maxAngle ? "--max-angle" : "--min-angle / --max-area") +
+    return std::string(maxAngle ? "--max-angle" : "--min-angle / --max-area / --max-edge / --size") +
            " has no effect with --mode " + name +
            ", which does not refine: use --mode acute, nonobtuse or quality (or leave --mode out)";
   if (maxAngle && mode != Mode::Acute)
@@ -177,11 +185,14 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
     return c;
   };
   // The refinement targets given, for the mode they imply or contradict.
-  bool modeGiven = false, maxAngleGiven = false, minAngleGiven = false, maxAreaGiven = false;
+  bool modeGiven = false, maxAngleGiven = false, minAngleGiven = false, maxAreaGiven = false,
+       gradingGiven = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     modeGiven |= a == "--mode", maxAngleGiven |= a == "--max-angle";
-    minAngleGiven |= a == "--min-angle", maxAreaGiven |= a == "--max-area";
+    minAngleGiven |= a == "--min-angle";
+    maxAreaGiven |= a == "--max-area" || a == "--max-edge" || a == "--size";
+    gradingGiven |= a == "--grading";
     if (a == "-h" || a == "--help") {
       c.action = CommandLine::Help;
       return c;
@@ -203,6 +214,8 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
     }
   }
   if (args.input.empty()) return fail("no input file");
+  if (gradingGiven && args.options.maxEdge == 0 && args.sizeFile.empty())
+    return fail("--grading limits how fast sizes grow: give --max-edge or --size too");
   std::string error = modeForTargets(modeGiven, maxAngleGiven, minAngleGiven || maxAreaGiven,
                                      args.options.mode);
   if (!error.empty()) return fail(error);
@@ -275,7 +288,14 @@ std::string usageText() {
                        below the domain's floor (--stats: angleFloor): said, aims as auto, exit 1
   --min-angle DEG      smallest angle wanted (quality; also with acute / nonobtuse). Quality
                        terminates up to 40; above, it falls back to 40 if it wanders
-  --max-area A         largest triangle area wanted (any refinement mode)
+  --max-area A         largest triangle area wanted (any refinement mode; a .poly's regional
+                       area bounds also hold in their regions)
+  --max-edge L         longest edge wanted (any refinement mode)
+  --size FILE          edge sizes over the plane (any refinement mode): a .json with "grid"
+                       {x0, y0, dx, dy, nx, ny, h: [nx * ny sizes]} (bilinear) and/or "points"
+                       [[x, y, size], ...] (linear between them)
+  --grading G          sizes from --max-edge and --size grow at most G per unit of distance
+                       (0.2 to 0.5 is usual; default: no limit)
   --max-steiner N      give up after adding N points (exit status 1; default 50 per input
                        vertex, at least 20000)
   --fill RULE          which regions form the domain:

@@ -13,6 +13,7 @@ namespace acutemesh::cli {
 struct Arguments {
   std::string input;
   std::string output;  // file name base; empty: INPUT without its extension, plus ".1"
+  std::string sizeFile;  // --size: read into options.size once the input is read
   std::vector<OutputFormat> formats{OutputFormat::Node, OutputFormat::Ele};
   Options options;       // as given; the input policy completes them once the input is read
   ChosenOptions chosen;  // which of them the user set, so the policy leaves them alone

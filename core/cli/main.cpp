@@ -101,6 +101,13 @@ int meshFile(const Arguments& args) {
                       "\"points_x\"), and " + args.input + " is not one");
 
   Options options = args.options;
+  if (!args.sizeFile.empty()) {
+    parsed = readSizeFile(args.sizeFile, options.size, &in.warnings);
+    if (!parsed.ok) {
+      std::fprintf(stderr, "acutemesh: error: %s\n", parsed.message.c_str());
+      return 2;
+    }
+  }
   applyInputPolicy(in, args.chosen, options);
   Result r = meshShowingProgress(in.pslg, options, t0);
   phases.insert(phases.end(), r.stats.phases.begin(), r.stats.phases.end());

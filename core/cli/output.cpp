@@ -109,6 +109,8 @@ void printStats(const std::string& input, const Options& opt, const Result& r,
               s.smallestInputAngle);
   std::printf(" \"smallestDomainAngle\": %.17g, \"angleFloor\": %.17g, \"angleBound\": %s,\n",
               s.smallestDomainAngle, s.angleFloor, shortestNumber(s.angleBound).c_str());
+  // The largest longest-edge-to-size ratio (at most 1 when every size is met; 0 without sizes).
+  std::printf(" \"sizeRatio\": %s,\n", shortestNumber(s.sizeRatio).c_str());
   // Triangles (indices into the written .ele / "triangles") that miss the target.
   std::printf(" \"missedTriangles\": [");
   for (size_t i = 0; i < s.missedTriangles.size(); ++i)

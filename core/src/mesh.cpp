@@ -17,6 +17,7 @@
 #include "domain_angles.h"
 #include "parts.h"
 #include "portable_math.h"
+#include "size_field.h"
 
 namespace acutemesh {
 namespace {
@@ -263,6 +264,7 @@ void listMissedTriangles(const Options& options, const Mesh& mesh,
                          const std::vector<const detail::RationalPoint*>& exactAt, Stats& stats) {
   const detail::AngleCheck below(options.maxAngle == kAutoMaxAngle ? 90 : options.maxAngle);
   const double cosMin = detail::portableCos(options.minAngle * M_PI / 180);
+  const detail::Sizes sizes(options);
   stats.missedTriangles.clear();
   for (size_t t = 0; t < mesh.triangleCount() && stats.missedTriangles.size() < kMaxMissedListed; ++t) {
     const uint32_t* v = &mesh.triangles[3 * t];
@@ -285,6 +287,7 @@ void listMissedTriangles(const Options& options, const Mesh& mesh,
       if (options.minAngle > 0 && cosine > cosMin * (1 + 1e-12)) miss = true;
     }
     if (options.maxArea > 0 && 0.5 * std::fabs(orient2d(p[0], p[1], p[2])) > options.maxArea) miss = true;
+    if (sizes.any() && sizes.ratio(p[0], p[1], p[2]) > 1) miss = true;
     if (miss) stats.missedTriangles.push_back(uint32_t(t));
   }
 }
@@ -344,6 +347,17 @@ void certify(const Options& options, double asked, double largestArea,
     met = false;
   // An area bound counts too: a quality run stopped by its time limit has triangles above it.
   if (options.maxArea > 0 && largestArea > options.maxArea) met = false;
+  const detail::Sizes sizes(options);
+  if (sizes.any()) {
+    const Mesh& m = result.mesh;
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+      const uint32_t* v = &m.triangles[3 * t];
+      stats.sizeRatio = std::max(stats.sizeRatio, sizes.ratio(&m.points[2 * size_t(v[0])],
+                                                              &m.points[2 * size_t(v[1])],
+                                                              &m.points[2 * size_t(v[2])]));
+    }
+    if (stats.sizeRatio > 1) met = false;
+  }
   stats.targetMet = met;
   if (!met) {
     Options missed = options;
@@ -471,7 +485,7 @@ std::string checkOptions(const Options& options) {
     return "minAngle must be at least 0 and below 60 degrees";
   if (!(options.maxArea >= 0) || !std::isfinite(options.maxArea))
     return "maxArea must be a finite number >= 0";
-  return {};
+  return detail::checkSizes(options);
 }
 
 // Times each phase into Stats::phases and reports its end to Options::progress; the phase
@@ -601,7 +615,9 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
   bool refining = options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
                   options.mode == Mode::Acute;
   Options target = options;
-  if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0)
+  if (refining) detail::compileSizes(T, inside, input, target);
+  if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0 &&
+      !detail::Sizes(target).any())
     target.minAngle = kQualityDefaultMinAngle;
   std::vector<uint8_t> freeVertex;
   std::vector<detail::ExactVertex> exact;
@@ -619,8 +635,9 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
   }
   inside = std::move(T.inside);
   if (refining) belowFloor = warnAboutInputAngles(target, corners, stats);
-  if (!refining && (options.minAngle > 0 || options.maxArea > 0 || options.maxAngle != 90))
-    stats.warnings.push_back(std::string("minAngle, maxAngle and maxArea have no effect in mode ") +
+  if (!refining && (options.minAngle > 0 || options.maxArea > 0 || options.maxAngle != 90 ||
+                    options.maxEdge > 0 || !options.size.empty() || options.grading > 0))
+    stats.warnings.push_back(std::string("minAngle, maxAngle, maxArea and sizes have no effect in mode ") +
                              nameOf(options.mode) +
                              ", which does not refine (modes quality, nonobtuse, acute do)");
   if (belowFloor) target.maxAngle = kAutoMaxAngle;
@@ -690,6 +707,7 @@ Result meshScaled(const Pslg& input, const Options& options) {
     double area = std::ldexp(options.maxArea, -2 * exponent);
     scaledOptions.maxArea = std::isinf(area) ? 0 : std::max(area, std::numeric_limits<double>::denorm_min());
   }
+  detail::scaleSizes(scaledOptions, exponent);
   Result r = detail::meshInRange(scaled, scaledOptions, exponent, true);
   // Steiner points below 2^-1022 once scaled back would lose bits (subnormal doubles), and
   // the mesh could fold: refused rather than returned inexact.

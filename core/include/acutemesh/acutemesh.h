@@ -96,8 +96,11 @@ struct SizeField {
   // Sizes at scattered points (x, y per point in `points`, one size each in `sizes`): linear
   // over the points' Delaunay triangulation, the nearest hull edge's value outside it.
   std::vector<double> points, sizes;
+  // The largest area a triangle may have, at its centroid (as Region::maxArea, anywhere);
+  // called as `function` is. Not limited by Options::grading.
+  std::function<double(double x, double y)> maxArea;
 
-  bool empty() const { return !function && grid.h.empty() && sizes.empty(); }
+  bool empty() const { return !function && grid.h.empty() && sizes.empty() && !maxArea; }
 };
 
 // Options::maxAngle for "the lowest bound the run can certify" (acute mode only; the CLI's

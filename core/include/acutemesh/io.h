@@ -55,6 +55,17 @@ ParseResult parseNode(std::string_view text, const std::string& name, Input& out
 // Keys of different kinds may not be mixed; unknown keys are skipped with a warning.
 ParseResult parseJson(std::string_view text, const std::string& name, Input& out);
 
+// A size file (Options::size; the CLI's --size): a JSON object with
+//  - "grid": {"x0", "y0", "dx", "dy": numbers, "nx", "ny": counts, "h": nx * ny sizes, row
+//    by row from (x0, y0)}: SizeField::grid, and/or
+//  - "points": [[x, y, size], ...]: SizeField::points and sizes.
+// Sizes must be > 0. Fills the grid and the points of `out` only on success.
+ParseResult parseSizeField(std::string_view text, const std::string& name, SizeField& out,
+                           std::vector<std::string>* warnings = nullptr);
+// The same from a file (.json).
+ParseResult readSizeFile(const std::string& path, SizeField& out,
+                         std::vector<std::string>* warnings = nullptr);
+
 // Reads a file by extension (.poly, .node, .json, any case); for a .poly without vertices it
 // reads BASE.node beside it. Messages name the file by `path`; an unreadable file gives
 // "PATH: cannot open (reason)".

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "parse_context.h"
 
@@ -74,6 +75,39 @@ class JsonReader {
   bool index(uint64_t& v, const char* expected);
   // Parses and discards any value (validating it).
   bool skipValue(int depth);
+
+  // Calls member(key, line) per member of an object, after its key and ':'; each key once.
+  // `what` names the object for messages.
+  template <class F>
+  bool object(const std::string& what, F&& member) {
+    if (!expect('{', ("'{' starting " + what).c_str())) return false;
+    std::vector<std::string> seen;
+    ws();
+    if (peek() == '}') {
+      ++p_;
+      return true;
+    }
+    std::string key;
+    while (true) {
+      ws();
+      const size_t keyLine = line_;
+      if (!string(key, "a key string")) return false;
+      for (const std::string& k : seen)
+        if (k == key) return c_.fail(keyLine, "expected each key once, found \"" + printable(key) + "\" again");
+      seen.push_back(key);
+      if (!expect(':', "':' after the key") || !member(key, keyLine)) return false;
+      ws();
+      if (peek() == ',') {
+        ++p_;
+        continue;
+      }
+      if (peek() == '}') {
+        ++p_;
+        return true;
+      }
+      return fail("',' or '}' in " + what);
+    }
+  }
 
   // Calls elem() per element of an array; `what` names the array for messages.
   template <class F>

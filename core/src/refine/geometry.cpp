@@ -32,16 +32,6 @@ uint32_t firstFixedCrossed(const Triangulation& T, uint32_t t, const double* x, 
   return kNone;
 }
 
-double domainArea(const Triangulation& T, const Options& options) {
-  double area = 0;
-  if (options.maxArea > 0)
-    for (uint32_t t = 0; t < T.triangleSlots(); ++t)
-      if (T.inDomain(t))
-        area += 0.5 * orient2d(T.point(T.tri[3 * t]), T.point(T.tri[3 * t + 1]),
-                               T.point(T.tri[3 * t + 2]));
-  return area;
-}
-
 double smallestEdge2(const Pslg& input) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (size_t i = 0; i < input.points.size(); ++i)

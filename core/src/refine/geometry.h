@@ -110,7 +110,5 @@ uint32_t firstFixedCrossed(const Triangulation& T, uint32_t t, const double* x, 
 // fill) stops there and leaves the triangle to the certificate.
 double smallestEdge2(const Pslg& input);
 
-// The domain's area (T.inside) where an area bound needs it (0 otherwise).
-double domainArea(const Triangulation& T, const Options& options);
 
 }  // namespace acutemesh::detail

@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "../build.h"
+#include "../size_field.h"
 #include "geometry.h"
 #include "params.h"
 #include "below90.h"
@@ -58,7 +59,7 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
   if (options.mode != Mode::Quality || options.minAngle <= kSureMinAngle)
     return refineOnce(start, input, options, budget, 0, T, freeVertex, exact, &start).result;
   const uint32_t half = uint32_t(std::clamp(
-      steinerBudget(input, options, domainArea(start.T, options)) / 2, 1.0, double(kMaxVertices)));
+      steinerBudget(input, options, sizeDemand(start.T, options)) / 2, 1.0, double(kMaxVertices)));
   RefineOutcome o = refineOnce(start, input, options, budget, half, T, freeVertex, exact);
   if (o.result.status == Status::Cancelled || budget.stop()) return o.result;
   Options sure = options;

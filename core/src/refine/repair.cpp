@@ -91,12 +91,10 @@ int Repair::repairGain(uint32_t t, Corner c, size_t* weighed) {
 StepResult Repair::repairAll() {
   Triangulation& T = s_.T;
   const Target& target = job_.target;
-  const Options& options = job_.options;
   RepairQueue& queue = queue_;
   using Order = RepairQueue::Order;
-  const bool byGain =
-      job_.strategy.fewestBadFirst && target.boundsLargest() && options.maxArea <= 0;
-  queue.reset(options.maxArea > 0 ? Order::FactorsOfTwo
+  const bool byGain = job_.strategy.fewestBadFirst && target.boundsLargest() && !target.sized();
+  queue.reset(target.sized() ? Order::FactorsOfTwo
               : byGain            ? Order::FewestBadFirst
                                   : Order::Largest);
   auto push = [&](uint32_t t) {

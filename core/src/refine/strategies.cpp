@@ -5,16 +5,17 @@
 #include <mutex>
 
 #include "exact_feet.h"
+#include "../size_field.h"
 #include "geometry.h"
 #include "refiner.h"
 #include "threads.h"
 
 namespace acutemesh::detail {
 
-double steinerBudget(const Pslg& input, const Options& options, double area) {
+double steinerBudget(const Pslg& input, const Options& options, double demand) {
   if (options.maxSteiner) return options.maxSteiner;
   double cap = std::max(kSteinerAtLeast, kSteinerPerInputVertex * double(input.vertexCount()));
-  return options.maxArea > 0 ? cap + 4 * area / options.maxArea : cap;
+  return cap + 4 * demand;
 }
 
 namespace {
@@ -73,10 +74,10 @@ std::vector<Strategy> strategiesFor(const Options& options) {
 }
 
 // The vertex count at which a run stops, for a Steiner cap (0: none) and the budget; and the
-// domain's area the budget was reckoned with (domainArea's, for the runs' reservations).
+// triangles the area and size bounds ask for (sizeDemand's, for the runs' reservations).
 struct SteinerLimit {
   uint32_t startVertices;
-  double area;
+  double demand;
   double budget;  // steinerBudget's
   uint32_t with(uint32_t steinerCap) const {
     double cap = steinerCap ? std::min(budget, double(steinerCap)) : budget;
@@ -93,14 +94,13 @@ class StrategyRun {
       : box_(std::make_unique<Box>(start, job)) {
     const uint32_t steinerLimit = limit.with(steinerCap);
     box_->limits.steinerLimit = steinerLimit;
-    const Options& options = job.options;
-    if (options.maxArea > 0) {
-      // About one vertex per two triangles of a third of the bound's area, within the limit,
+    if (limit.demand > 0) {
+      // About one vertex per two triangles of a third of the bounds' area, within the limit,
       // and no more than kReservedVerticesAtMost more: a bound far too small for the time
       // limit must not reserve gigabytes up front.
       const double n = start.T.vertexCount();
       box_->state.reserve(
-          size_t(std::min({double(steinerLimit), n + 1.6 * limit.area / options.maxArea,
+          size_t(std::min({double(steinerLimit), n + 1.6 * limit.demand,
                            n + double(kReservedVerticesAtMost)})));
     }
   }
@@ -307,8 +307,8 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   const std::vector<Strategy> strategies = strategiesFor(options);
   const Target target(options);
   const Jobs jobs{input, options, target, budget, strategies, smallestEdge2(input)};
-  const double area = domainArea(start.T, options);
-  const SteinerLimit limit{start.T.vertexCount(), area, steinerBudget(input, options, area)};
+  const double demand = sizeDemand(start.T, options);
+  const SteinerLimit limit{start.T.vertexCount(), demand, steinerBudget(input, options, demand)};
   StrategyChoice choice(start, budget, steinerCap);
   size_t next = 0;
   size_t leading = 0;

@@ -32,8 +32,8 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    RefineState* releaseStart = nullptr);
 
 // The Steiner points a run may make: Options::maxSteiner, or without a budget from the caller
-// kSteinerPerInputVertex per input vertex, at least kSteinerAtLeast, and with an area bound
-// room for about two triangles of that area per unit of domain area (`area`, domainArea's).
-double steinerBudget(const Pslg& input, const Options& options, double area);
+// kSteinerPerInputVertex per input vertex, at least kSteinerAtLeast, and with area or size
+// bounds room for about twice the triangles they ask for (`demand`, sizeDemand's).
+double steinerBudget(const Pslg& input, const Options& options, double demand);
 
 }  // namespace acutemesh::detail

@@ -13,7 +13,8 @@ Target::Target(const Options& options)
       cosMin(portableCos(options.minAngle * kDegree)),
       cosQuality(portableCos(std::min(options.minAngle + kQualityRoom, 60.0) * kDegree)),
       minAngle(options.minAngle),
-      maxArea(options.maxArea) {}
+      maxArea(options.maxArea),
+      sizes(options) {}
 
 int Target::footCorners(const RefineState& s, uint32_t t) const {
   int mask = 0;

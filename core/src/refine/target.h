@@ -1,5 +1,6 @@
 // The target: whether a triangle is good enough. Acute (every angle below the bound, exactly
-// at 90 degrees), non-obtuse (no angle over 90, exactly), a minimum angle, a largest area.
+// at 90 degrees), non-obtuse (no angle over 90, exactly), a minimum angle, a largest area,
+// sizes (Options::maxEdge, Options::size, the regions' area bounds).
 // Every step asks here; nothing else decides what "bad" means.
 #pragma once
 
@@ -8,6 +9,7 @@
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
+#include "../size_field.h"
 #include "geometry.h"
 #include "params.h"
 #include "state.h"
@@ -40,6 +42,10 @@ class Target {
   double cosMax = 0, cosMin = 1;
   double cosQuality = 1;  // of the angles quality points aim for (a little over minAngle)
   double minAngle = 0, maxArea = 0;
+  Sizes sizes;  // maxEdge, the size field, the regions' area bounds (compiled: size_field.h)
+
+  // An area bound or a size: refinement inserts circumcentres where they are missed.
+  bool sized() const { return maxArea > 0 || sizes.any(); }
 
   // Acute or non-obtuse: a bound on the largest angle, where the point count is the score.
   bool boundsLargest() const { return acute || nonObtuse; }
@@ -104,6 +110,7 @@ inline Corner Target::worstCorner(const double* const p[3], int footCorners) con
     double area = 0.5 * std::fabs(orient2d(p[0], p[1], p[2]));
     if (area > maxArea) return {0, false, true};
   }
+  if (sizes.any() && sizes.ratio(p[0], p[1], p[2]) > 1) return {0, false, true};
   return {};
 }
 
