@@ -3,10 +3,12 @@
 // whose markers and attributes are filled by hand, and Triangle's defaults when they are not.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "acutemesh/io.h"
+#include "fixtures.h"
 
 using namespace acutemesh;
 
@@ -104,69 +106,49 @@ TEST(Formats, JsonCarriesMarkersAndAttributes) {
   EXPECT_TRUE(r.ok) << r.message;
 }
 
+// The files in tests/data/io/two-squares are marked()'s, written by these writers and checked
+// by hand; tests/cli/formats_readback.py reads them with meshio too.
+std::string golden(const std::string& extension) {
+  return fixtures::readText(fixtures::kData + "/io/two-squares/marked" + extension);
+}
+
 // Gmsh 4.1: physical tags are the attribute 1 and the positive markers; 2.5 and -2 are
 // numbered after the largest such (2 and 8). Entities by increasing value; the triangles of
 // each surface in one block, element tags = .ele index + 1, lines after them.
-TEST(Formats, Msh41) {
-  EXPECT_EQ(formatMsh(marked()),
-      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n7\n2 1 \"attribute 1\"\n"
-      "2 2 \"attribute 2.5\"\n1 8 \"marker -2\"\n1 1 \"marker 1\"\n1 3 \"marker 3\"\n"
-      "1 5 \"marker 5\"\n1 7 \"marker 7\"\n$EndPhysicalNames\n$Entities\n0 5 2 0\n"
-      "1 0 0 0 5 5 0 1 8 0\n2 0 0 0 5 5 0 1 1 0\n3 0 0 0 5 5 0 1 3 0\n4 0 0 0 5 5 0 1 5 0\n"
-      "5 0 0 0 5 5 0 1 7 0\n1 0 0 0 5 5 0 1 1 0\n2 0 0 0 5 5 0 1 2 0\n$EndEntities\n"
-      "$Nodes\n1 7 1 7\n2 1 0 7\n1\n2\n3\n4\n5\n6\n7\n0 0 0\n1 0 0\n2 0 0\n2 1 0\n1 1 0\n"
-      "0 1 0\n5 5 0\n$EndNodes\n$Elements\n7 11 1 11\n2 1 2 2\n1 1 2 5\n2 1 5 6\n2 2 2 2\n"
-      "3 2 3 4\n4 2 4 5\n1 1 1 1\n8 4 5\n1 2 1 1\n7 3 4\n1 3 1 1\n11 2 5\n1 4 1 2\n5 1 2\n"
-      "6 2 3\n1 5 1 2\n9 5 6\n10 6 1\n$EndElements\n");
-}
-
-TEST(Formats, Msh22) {
-  EXPECT_EQ(formatMsh2(marked()),
-      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n7\n2 1 \"attribute 1\"\n"
-      "2 2 \"attribute 2.5\"\n1 8 \"marker -2\"\n1 1 \"marker 1\"\n1 3 \"marker 3\"\n"
-      "1 5 \"marker 5\"\n1 7 \"marker 7\"\n$EndPhysicalNames\n$Nodes\n7\n1 0 0 0\n2 1 0 0\n"
-      "3 2 0 0\n4 2 1 0\n5 1 1 0\n6 0 1 0\n7 5 5 0\n$EndNodes\n$Elements\n11\n"
-      "1 2 2 1 1 1 2 5\n2 2 2 1 1 1 5 6\n3 2 2 2 2 2 3 4\n4 2 2 2 2 2 4 5\n5 1 2 5 4 1 2\n"
-      "6 1 2 5 4 2 3\n7 1 2 1 2 3 4\n8 1 2 8 1 4 5\n9 1 2 7 5 5 6\n10 1 2 7 5 6 1\n"
-      "11 1 2 3 3 2 5\n$EndElements\n");
-}
-
-// Cells: the triangles, then the lines (segment edges, then boundary edges on none).
-TEST(Formats, Vtu) {
-  EXPECT_EQ(formatVtu(marked()),
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "<UnstructuredGrid>\n<Piece NumberOfPoints=\"7\" NumberOfCells=\"11\">\n<PointData>\n"
-      "<DataArray type=\"Int32\" Name=\"marker\" format=\"ascii\">\n5\n5\n1\n-2\n7\n7\n0\n"
-      "</DataArray>\n</PointData>\n<CellData>\n"
-      "<DataArray type=\"Float64\" Name=\"attribute\" format=\"ascii\">\n1\n1\n2.5\n2.5\n"
-      "0\n0\n0\n0\n0\n0\n0\n</DataArray>\n"
-      "<DataArray type=\"Int32\" Name=\"marker\" format=\"ascii\">\n0\n0\n0\n0\n5\n5\n1\n"
-      "-2\n7\n7\n3\n</DataArray>\n</CellData>\n<Points>\n"
-      "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n0 0 0\n"
-      "1 0 0\n2 0 0\n2 1 0\n1 1 0\n0 1 0\n5 5 0\n</DataArray>\n</Points>\n<Cells>\n"
-      "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n0 1 4\n0 4 5\n"
-      "1 2 3\n1 3 4\n0 1\n1 2\n2 3\n3 4\n4 5\n5 0\n1 4\n</DataArray>\n"
-      "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n3\n6\n9\n12\n14\n16\n"
-      "18\n20\n22\n24\n26\n</DataArray>\n"
-      "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n5\n5\n5\n5\n3\n3\n3\n3\n"
-      "3\n3\n3\n</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+TEST(Formats, GoldenFiles) {
+  const Mesh m = marked();
+  EXPECT_EQ(formatMsh(m), golden(".msh"));
+  EXPECT_EQ(formatMsh2(m), golden(".v2.msh"));
+  // Cells: the triangles, then the lines (segment edges, then boundary edges on none).
+  EXPECT_EQ(formatVtu(m), golden(".vtu"));
+  EXPECT_EQ(formatNode(m), golden(".node"));
+  EXPECT_EQ(formatEle(m), golden(".ele"));
+  EXPECT_EQ(formatEdge(m), golden(".edge"));
+  EXPECT_EQ(formatNeigh(m), golden(".neigh"));
+  // The files' names are the ones writeMeshFiles gives.
+  const std::string base = testing::TempDir() + "acutemesh_formats_marked";
+  const ParseResult r = writeMeshFiles(m, base, {"msh", "msh2", "vtu"});
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_EQ(fixtures::readText(base + ".v2.msh"), golden(".v2.msh"));
+  std::remove((base + ".msh").c_str());
+  std::remove((base + ".v2.msh").c_str());
+  std::remove((base + ".vtu").c_str());
 }
 
 // Without attributes or markers, one physical surface "domain"; the inner segment's marker 0
-// has a curve but no physical group; no "attribute" cell data.
+// has a group of its own, numbered after marker 1; no "attribute" cell data.
 TEST(Formats, GmshAndVtkWithoutMarkers) {
   const Mesh m = twoSquares();
   const std::string msh = formatMsh(m);
-  EXPECT_NE(msh.find("$PhysicalNames\n2\n2 1 \"domain\"\n1 1 \"marker 1\"\n$EndPhysicalNames\n"
-                     "$Entities\n0 2 1 0\n1 0 0 0 5 5 0 0 0\n2 0 0 0 5 5 0 1 1 0\n"
-                     "1 0 0 0 5 5 0 1 1 0\n$EndEntities\n"),
+  EXPECT_NE(msh.find("$PhysicalNames\n3\n2 1 \"domain\"\n1 2 \"marker 0\"\n1 1 \"marker 1\"\n"
+                     "$EndPhysicalNames\n$Entities\n0 2 1 0\n1 0 0 0 5 5 0 1 2 0\n"
+                     "2 0 0 0 5 5 0 1 1 0\n1 0 0 0 5 5 0 1 1 0\n$EndEntities\n"),
             std::string::npos) << msh;
   EXPECT_NE(msh.find("$Elements\n3 11 1 11\n2 1 2 4\n"), std::string::npos) << msh;
   EXPECT_NE(msh.find("1 1 1 1\n11 2 5\n1 2 1 6\n5 1 2\n"), std::string::npos) << msh;
   const std::string msh2 = formatMsh2(m);
   EXPECT_NE(msh2.find("1 2 2 1 1 1 2 5\n"), std::string::npos) << msh2;
-  EXPECT_NE(msh2.find("11 1 2 0 1 2 5\n"), std::string::npos) << msh2;  // marker 0: no group
+  EXPECT_NE(msh2.find("11 1 2 2 1 2 5\n"), std::string::npos) << msh2;  // marker 0: group 2
   const std::string vtu = formatVtu(m);
   EXPECT_EQ(vtu.find("attribute"), std::string::npos);
   EXPECT_NE(vtu.find("Name=\"marker\" format=\"ascii\">\n1\n1\n1\n1\n1\n1\n0\n"), std::string::npos);
@@ -193,7 +175,7 @@ TEST(Formats, PhysicalTagsOfOddValues) {
   Mesh m = twoSquares();
   m.triangleAttributes = {0, 4e9, 3, -1};
   const std::string msh = formatMsh(m);
-  EXPECT_NE(msh.find("$PhysicalNames\n5\n2 4 \"attribute -1\"\n2 5 \"attribute 0\"\n"
+  EXPECT_NE(msh.find("$PhysicalNames\n6\n2 4 \"attribute -1\"\n2 5 \"attribute 0\"\n"
                      "2 3 \"attribute 3\"\n2 6 \"attribute 4e+09\"\n"),
             std::string::npos) << msh;
 }

@@ -110,12 +110,12 @@ std::string formatSvg(const Mesh& m);
 // line marker in increasing order. Physical groups, named in $PhysicalNames: per attribute
 // a 2D group "attribute A" (tag A when A is a positive integer up to 2^31 - 1, else numbered
 // after the largest such tag), or one group 1 "domain" without attributes (tools that keep
-// only physical elements keep the triangles); per nonzero marker a 1D group "marker M" (tag M
-// when positive, else -- negative markers -- numbered after the largest positive one). Lines
-// with marker 0 (inner segments without a marker) are in no physical group.
+// only physical elements keep the triangles); per marker a 1D group "marker M" (tag M when
+// positive, else -- 0, on inner segments without a marker, and negative markers -- numbered
+// after the largest positive one). Every element is in a physical group.
 std::string formatMsh(const Mesh& m);
 // Gmsh MSH 2.2 ASCII: the same nodes, elements, tags and $PhysicalNames as formatMsh, each
-// element with two tags: its physical group (0: none) and its entity (elementary) tag.
+// element with two tags: its physical group and its entity (elementary) tag.
 std::string formatMsh2(const Mesh& m);
 // VTK XML UnstructuredGrid, ASCII: every vertex a point (z = 0), the triangles (VTK_TRIANGLE)
 // then the lines (VTK_LINE) as cells. PointData "marker" (Int32, per vertex); CellData

@@ -199,12 +199,13 @@ size_t indexIn(const std::vector<T>& sorted, T v) {
 // The Gmsh view of a mesh (both MSH versions): one surface per region attribute (one in all
 // without attributes, physical group 1 "domain", so that tools which keep only physical
 // elements keep the triangles), one curve per line marker, a physical group per attribute and
-// per nonzero marker; marker 0 lines (inner segments without a marker) have none.
+// per marker. Every element is in a group: meshio's MSH 4.1 reader fails on an entity with
+// none, and so marker 0 (inner segments without a marker) has one too.
 struct GmshGroups {
   std::vector<double> attributes;  // distinct, sorted: surface k + 1 has attributes[k]
   std::vector<int64_t> surfaceTags;  // its physical tag
   std::vector<int32_t> markers;    // distinct, sorted: curve k + 1 has markers[k]
-  std::vector<int64_t> curveTags;  // its physical tag, 0 for marker 0
+  std::vector<int64_t> curveTags;  // its physical tag
   std::vector<uint32_t> surfaceOf, curveOf;  // per triangle, per line: its entity tag
 
   GmshGroups(const Mesh& m, const Marked& marked) {
@@ -216,22 +217,15 @@ struct GmshGroups {
                               ? static_cast<uint32_t>(indexIn(attributes, (*marked.attributes)[i]) + 1)
                               : 1);
     markers = distinct(marked.line);
-    std::vector<double> nonzero;
-    for (int32_t v : markers)
-      if (v != 0) nonzero.push_back(v);
-    const std::vector<int64_t> tags = physicalTags(nonzero);
-    for (int32_t v : markers)
-      curveTags.push_back(v == 0 ? 0 : tags[indexIn(nonzero, static_cast<double>(v))]);
+    curveTags = physicalTags(std::vector<double>(markers.begin(), markers.end()));
     for (int32_t v : marked.line) curveOf.push_back(static_cast<uint32_t>(indexIn(markers, v) + 1));
   }
 
   // $PhysicalNames: "attribute A" per surface ("domain" without attributes), "marker M" per
-  // curve with a nonzero marker.
+  // curve.
   void putPhysicalNames(std::string& s) const {
-    size_t count = surfaceTags.size();
-    for (int64_t tag : curveTags) count += tag != 0;
     s += "$PhysicalNames\n";
-    putUint(s, count);
+    putUint(s, surfaceTags.size() + curveTags.size());
     s += '\n';
     for (size_t k = 0; k < surfaceTags.size(); ++k) {
       s += "2 ";
@@ -245,7 +239,6 @@ struct GmshGroups {
       }
     }
     for (size_t k = 0; k < markers.size(); ++k) {
-      if (curveTags[k] == 0) continue;
       s += "1 ";
       putInt(s, curveTags[k]);
       s += " \"marker ";
@@ -732,8 +725,8 @@ std::string formatMsh(const Mesh& m) {
       putDouble(s, box[k]);
       if (k % 2) s += " 0";
     }
-    s += physical ? " 1 " : " 0";
-    if (physical) putInt(s, physical);
+    s += " 1 ";
+    putInt(s, physical);
     s += " 0\n";  // no bounding entities
   };
   for (size_t k = 0; k < g.markers.size(); ++k) putEntity(k + 1, g.curveTags[k]);
@@ -799,7 +792,7 @@ std::string formatMsh(const Mesh& m) {
 }
 
 // Gmsh MSH 2.2: nodes and elements numbered as in formatMsh, each element with its physical
-// tag (0: none) and its entity's tag.
+// tag and its entity's tag.
 std::string formatMsh2(const Mesh& m) {
   const Marked marked(m);
   const GmshGroups g(m, marked);
