@@ -5,13 +5,14 @@ scripts/setup.sh installs), and Triangle's .edge/.neigh checked by a parser of t
 usage: /usr/bin/python3 formats_readback.py ACUTEMESH DATA_DIR
 
 For each fixture the CLI meshes it (acute) into .node/.ele/.edge/.neigh/.msh/.v2.msh/.vtu;
-then: meshio reads the MSH 4.1, MSH 2.2 and VTU files and finds the same points (exactly, as
+then: meshio (and Gmsh's -check, when gmsh is installed) reads the MSH 4.1, MSH 2.2 and VTU files and finds the same points (exactly, as
 doubles), the same triangles, and physical groups / cell data that say what .node, .ele and
 .edge say (vertex markers, region attributes, edge markers); every boundary edge is a line.
 A missing meshio is a failure: setup installs it.
 """
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -180,11 +181,19 @@ def check_files(name, base):
     for path in (base + ".msh", base + ".v2.msh"):
         check_gmsh(name, path, points, vertex_markers, triangles, attributes, edges)
     check_vtu(name, base + ".vtu", points, vertex_markers, triangles, attributes, edges)
+    # Gmsh itself, when it is installed (Debian's gmsh; setup does not install it): both files
+    # load and pass its coherence check without an error.
+    if shutil.which("gmsh"):
+        for path in (base + ".msh", base + ".v2.msh"):
+            run = subprocess.run(["gmsh", "-nopopup", "-check", path], capture_output=True, text=True, timeout=120)
+            errors = [l for l in (run.stdout + run.stderr).splitlines() if l.startswith("Error")]
+            check(run.returncode == 0 and not errors, f"{path}: gmsh -check: exit {run.returncode} {errors}")
     # The MSH 4.1 header as the spec has it (meshio reads 2.2 files too).
     with open(base + ".msh") as f:
         check(f.read(40).startswith("$MeshFormat\n4.1 0 8\n"), f"{name}.msh: not MSH 4.1")
     print(f"read back: {name}: {len(points)} vertices, {len(triangles)} triangles, "
-          f"{len(edges)} edges, attributes {'yes' if attributes else 'none'}")
+          f"{len(edges)} edges, attributes {'yes' if attributes else 'none'}"
+          f"{'' if shutil.which('gmsh') else ' (gmsh not installed: meshio only)'}")
     return points, vertex_markers, triangles, attributes, edges
 
 

@@ -2,7 +2,8 @@
 // 2.2, VTK's .vtu and the CG:SHOP 2025 solution.
 //
 // Coordinates are written so that they read back as the same doubles: the shortest
-// round-trip form (std::to_chars) where the library has it, "%.17g" otherwise. Vertex indices
+// round-trip form (std::to_chars, or the same text made from printf where the library lacks
+// it). Vertex indices
 // in .node/.ele/.poly are 0-based (Triangle's -z convention), which each file states in its
 // first line; OBJ is 1-based by definition. The CG:SHOP solution writes each coordinate as the
 // exact rational the double is (an integer, or "p/q" with q a power of two).
@@ -12,6 +13,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <utility>
 #include <vector>
@@ -31,16 +33,59 @@ namespace {
 
 const char kTriangleHeader[] = "# written by acutemesh, indices 0-based\n";
 
+#if ACUTEMESH_FLOAT_TO_CHARS
 void putDouble(std::string& s, double v) {
   char buf[40];
-#if ACUTEMESH_FLOAT_TO_CHARS
   std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v);
   s.append(buf, r.ptr);
-#else
-  const int n = std::snprintf(buf, sizeof buf, "%.17g", v);
-  s.append(buf, static_cast<size_t>(n));
-#endif
 }
+#else
+// What std::to_chars(v) writes, for libraries without it (Emscripten's libc++), so that the
+// package writes the CLI's very text: the fewest significant digits that read back as v (a
+// correctly rounded "%.*e" that does is the shortest), laid out plain or in scientific
+// notation, whichever is shorter, plain on a tie.
+void putDouble(std::string& s, double v) {
+  char buf[48];
+  if (!std::isfinite(v)) {
+    const int n = std::snprintf(buf, sizeof buf, "%g", v);
+    s.append(buf, static_cast<size_t>(n));
+    return;
+  }
+  for (int precision = 0; precision <= 17; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*e", precision, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  // buf is [-]d[.ddd]e(+|-)XX: its digits, without trailing zeros, and the exponent.
+  const char* p = buf;
+  const bool negative = *p == '-';
+  if (negative) ++p;
+  std::string digits;
+  for (; *p != 'e'; ++p)
+    if (*p != '.') digits += *p;
+  const int exponent = std::atoi(p + 1);
+  while (digits.size() > 1 && digits.back() == '0') digits.pop_back();
+  const int count = static_cast<int>(digits.size());
+  std::string plain;
+  if (exponent < 0) {
+    plain = "0." + std::string(static_cast<size_t>(-exponent - 1), '0') + digits;
+  } else if (count <= exponent + 1) {  // an integer: to_chars writes its exact digits
+    char whole[400];
+    const int n = std::snprintf(whole, sizeof whole, "%.0f", std::fabs(v));
+    plain.assign(whole, static_cast<size_t>(n));
+  } else {
+    plain = digits.substr(0, static_cast<size_t>(exponent + 1)) + "." +
+            digits.substr(static_cast<size_t>(exponent + 1));
+  }
+  std::string scientific = digits.substr(0, 1);
+  if (count > 1) scientific += "." + digits.substr(1);
+  const int magnitude = exponent < 0 ? -exponent : exponent;
+  scientific += exponent < 0 ? "e-" : "e+";
+  if (magnitude < 10) scientific += '0';
+  scientific += std::to_string(magnitude);
+  if (negative) s += '-';
+  s += plain.size() <= scientific.size() ? plain : scientific;
+}
+#endif
 
 // JSON has no NaN or infinity: those become null (and are rejected when read back).
 void putJsonDouble(std::string& s, double v) {
@@ -749,44 +794,41 @@ std::string formatMsh(const Mesh& m) {
   }
   s += "$EndNodes\n$Elements\n";
   // Blocks: the surfaces' triangles, then the curves' lines, empty ones left out.
-  std::vector<size_t> perSurface(g.surfaceTags.size(), 0), perCurve(g.markers.size(), 0);
-  for (uint32_t k : g.surfaceOf) ++perSurface[k - 1];
-  for (uint32_t k : g.curveOf) ++perCurve[k - 1];
+  auto byEntity = [](const std::vector<uint32_t>& entityOf, size_t entities) {
+    std::vector<std::vector<size_t>> members(entities);
+    for (size_t i = 0; i < entityOf.size(); ++i) members[entityOf[i] - 1].push_back(i);
+    return members;
+  };
+  const std::vector<std::vector<size_t>> surfaces = byEntity(g.surfaceOf, g.surfaceTags.size());
+  const std::vector<std::vector<size_t>> curves = byEntity(g.curveOf, g.markers.size());
   size_t blocks = 0;
-  for (size_t c : perSurface) blocks += c > 0;
-  for (size_t c : perCurve) blocks += c > 0;
+  for (const auto* list : {&surfaces, &curves})
+    for (const std::vector<size_t>& members : *list) blocks += !members.empty();
   putUint(s, blocks);
   s += ' ';
   putUint(s, t + lines);
   s += t + lines ? " 1 " : " 0 ";
   putUint(s, t + lines);
   s += '\n';
-  for (size_t k = 0; k < perSurface.size(); ++k) {
-    if (!perSurface[k]) continue;
-    s += "2 ";
-    putUint(s, k + 1);
-    s += " 2 ";
-    putUint(s, perSurface[k]);
-    s += '\n';
-    for (size_t i = 0; i < t; ++i) {
-      if (g.surfaceOf[i] != k + 1) continue;
-      putUint(s, i + 1);
-      putNodes1(s, &m.triangles[3 * i], 3);
+  // Element i of a dimension: tag firstTag + i, `corners` vertices from v[corners * i].
+  auto putBlocks = [&](const std::vector<std::vector<size_t>>& entities, int dim, size_t firstTag,
+                       const uint32_t* v, int corners) {
+    for (size_t k = 0; k < entities.size(); ++k) {
+      if (entities[k].empty()) continue;
+      putUint(s, static_cast<uint64_t>(dim));
+      s += ' ';
+      putUint(s, k + 1);
+      s += dim == 2 ? " 2 " : " 1 ";  // element types: 3-node triangle, 2-node line
+      putUint(s, entities[k].size());
+      s += '\n';
+      for (size_t i : entities[k]) {
+        putUint(s, firstTag + i);
+        putNodes1(s, v + static_cast<size_t>(corners) * i, corners);
+      }
     }
-  }
-  for (size_t k = 0; k < perCurve.size(); ++k) {
-    if (!perCurve[k]) continue;
-    s += "1 ";
-    putUint(s, k + 1);
-    s += " 1 ";
-    putUint(s, perCurve[k]);
-    s += '\n';
-    for (size_t j = 0; j < lines; ++j) {
-      if (g.curveOf[j] != k + 1) continue;
-      putUint(s, t + j + 1);
-      putNodes1(s, &marked.lines[2 * j], 2);
-    }
-  }
+  };
+  putBlocks(surfaces, 2, 1, m.triangles.data(), 3);
+  putBlocks(curves, 1, t + 1, marked.lines.data(), 2);
   s += "$EndElements\n";
   return s;
 }
