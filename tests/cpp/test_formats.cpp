@@ -3,6 +3,7 @@
 // whose markers and attributes are filled by hand, and Triangle's defaults when they are not.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -178,6 +179,20 @@ TEST(Formats, PhysicalTagsOfOddValues) {
   EXPECT_NE(msh.find("$PhysicalNames\n6\n2 4 \"attribute -1\"\n2 5 \"attribute 0\"\n"
                      "2 3 \"attribute 3\"\n2 6 \"attribute 4e+09\"\n"),
             std::string::npos) << msh;
+}
+
+// Attributes that are not one finite number per triangle are none (Gmsh groups them by value).
+TEST(Formats, AttributesOnlyWhenOneFinitePerTriangle) {
+  const Mesh plain = twoSquares();
+  for (const std::vector<double>& bad :
+       {std::vector<double>{1, 2, 3}, std::vector<double>{1, 2, std::nan(""), 4}}) {
+    Mesh m = twoSquares();
+    m.triangleAttributes = bad;
+    EXPECT_EQ(formatEle(m), formatEle(plain));
+    EXPECT_EQ(formatMsh(m), formatMsh(plain));
+    EXPECT_EQ(formatVtu(m), formatVtu(plain));
+    EXPECT_EQ(formatJson(m), formatJson(plain));
+  }
 }
 
 // An empty mesh writes well-formed empty sections.

@@ -77,7 +77,7 @@ ParseResult readInputFile(const std::string& path, Input& out);
 // carries them: Mesh::vertexMarkers / segmentMarkers when they hold one per item, else 0; in
 // both cases a zero marker on the mesh's boundary becomes 1 (Triangle's rule, as adjacency()
 // gives its edgeMarkers). The region attribute Mesh::triangleAttributes is written when it
-// holds one per triangle, and not at all otherwise. The "lines" of MSH and VTU are the mesh's
+// holds one finite number per triangle, and not at all otherwise. The "lines" of MSH and VTU are the mesh's
 // segment edges in order, then its boundary edges on no input segment (marker 1), so that
 // every boundary edge is among them.
 std::string formatNode(const Mesh& m);  // "<#v> 2 0 1": "i x y marker"

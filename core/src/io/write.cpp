@@ -125,6 +125,14 @@ uint64_t edgeKey(uint32_t a, uint32_t b) {
   return static_cast<uint64_t>(std::min(a, b)) << 32 | std::max(a, b);
 }
 
+// Whether the mesh has a region attribute per triangle to write (finite ones: they are sorted
+// into Gmsh's groups).
+bool hasAttributes(const Mesh& m) {
+  const std::vector<double>& a = m.triangleAttributes;
+  return !a.empty() && a.size() == m.triangleCount() &&
+         std::all_of(a.begin(), a.end(), [](double v) { return std::isfinite(v); });
+}
+
 // adjacency() of a mesh whose triangles name its vertices; nothing for one that does not (a
 // writer is handed any mesh, and adjacency() indexes by vertex).
 Adjacency adjacencyOf(const Mesh& m) {
@@ -197,8 +205,7 @@ struct Marked {
         line.push_back(1);
       }
     }
-    if (m.triangleAttributes.size() == m.triangleCount() && m.triangleCount() > 0)
-      attributes = &m.triangleAttributes;
+    if (hasAttributes(m)) attributes = &m.triangleAttributes;
   }
 };
 
@@ -441,7 +448,7 @@ std::string formatEle(const Mesh& m) {
   s.reserve(trianglesBytes(m) + 64);
   s += kTriangleHeader;
   const size_t t = m.triangleCount();
-  const bool attributes = m.triangleAttributes.size() == t && t > 0;
+  const bool attributes = hasAttributes(m);
   putUint(s, t);
   s += attributes ? " 3 1\n" : " 3 0\n";
   for (size_t i = 0; i < t; ++i) {
