@@ -783,12 +783,17 @@ std::string formatMsh(const Mesh& m) {
   };
   for (size_t k = 0; k < g.markers.size(); ++k) putEntity(k + 1, g.curveTags[k]);
   for (size_t k = 0; k < g.surfaceTags.size(); ++k) putEntity(k + 1, g.surfaceTags[k]);
+  // A section's first line: its blocks, its items, their first and last tags (1..count).
+  auto putCounts = [&](size_t blocks, size_t count) {
+    putUint(s, blocks);
+    s += ' ';
+    putUint(s, count);
+    s += count ? " 1 " : " 0 ";
+    putUint(s, count);
+    s += '\n';
+  };
   s += "$EndEntities\n$Nodes\n";
-  s += n ? "1 " : "0 ";
-  putUint(s, n);
-  s += n ? " 1 " : " 0 ";
-  putUint(s, n);
-  s += '\n';
+  putCounts(n ? 1 : 0, n);
   if (n) {
     s += "2 1 0 ";
     putUint(s, n);
@@ -811,12 +816,7 @@ std::string formatMsh(const Mesh& m) {
   size_t blocks = 0;
   for (const auto* list : {&surfaces, &curves})
     for (const std::vector<size_t>& members : *list) blocks += !members.empty();
-  putUint(s, blocks);
-  s += ' ';
-  putUint(s, t + lines);
-  s += t + lines ? " 1 " : " 0 ";
-  putUint(s, t + lines);
-  s += '\n';
+  putCounts(blocks, t + lines);
   // Element i of a dimension: tag firstTag + i, `corners` vertices from v[corners * i].
   auto putBlocks = [&](const std::vector<std::vector<size_t>>& entities, int dim, size_t firstTag,
                        const uint32_t* v, int corners) {
