@@ -22,6 +22,7 @@ REQUIREMENTS=(
   "/usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a|/usr/lib/llvm-14/lib/clang/14/lib/linux/libclang_rt.fuzzer-x86_64.a:libclang-rt-14-dev"
   "emcc:emscripten"                   # the WebAssembly build (npm package)
   "chromium:chromium"                 # the browser tests (tests/web, playwright-core)
+  "/usr/lib/python3/dist-packages/meshio/__init__.py:python3-meshio"  # .msh/.vtu read back (tests/formats)
 )
 # ---------------------------------------------------------------------------------------------
 

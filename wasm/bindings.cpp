@@ -88,6 +88,9 @@ Mesh meshFromJs(const val& m) {
   mesh.triangles = fromJs<uint32_t>(m["triangles"]);
   mesh.segments = fromJs<uint32_t>(m["segments"]);
   mesh.vertexKind = fromJs<uint8_t>(m["vertexKind"]);
+  mesh.vertexMarkers = fromJs<int32_t>(m["vertexMarkers"]);  // for the writers
+  mesh.segmentMarkers = fromJs<int32_t>(m["segmentMarkers"]);
+  mesh.triangleAttributes = fromJs<double>(m["triangleAttributes"]);
   const val exact = m["exactPoints"];  // checked by the facade: [{vertex, x, y}]
   const unsigned count = exact.isUndefined() ? 0 : exact["length"].as<unsigned>();
   for (unsigned i = 0; i < count; ++i)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
+#include <vector>
 
 namespace acutemesh::cli {
 namespace {
@@ -266,11 +267,12 @@ void addChoices(std::string& out, std::string label, const Entry (&table)[N], En
 
 std::string usageText() {
   const Arguments defaults;
-  std::string formats, defaultFormats, special;
+  std::string formats, defaultFormats;
+  std::vector<std::string> special;  // the formats whose extension is not their name
   for (const OutputFormatInfo& f : kOutputFormats) {
     formats += std::string(formats.empty() ? "" : ",") + f.name;
     if (f.extension != "." + std::string(f.name))
-      special += std::string(f.name) + ": BASE" + f.extension + ", " + f.description;
+      special.push_back(std::string(f.name) + ": BASE" + f.extension + ", " + f.description);
   }
   for (OutputFormat f : defaults.formats) defaultFormats += std::string(defaultFormats.empty() ? "" : ",") + nameOf(f);
 
@@ -281,7 +283,7 @@ std::string usageText() {
       "options:\n";
   addWrapped(s, "  -o, --output BASE", "write BASE.node, BASE.ele, ... (default: INPUT without extension + \".1\")");
   addWrapped(s, "  --format LIST", "comma list of " + formats + " (default: " + defaultFormats + ")");
-  if (!special.empty()) addWrapped(s, "", special);
+  for (const std::string& line : special) addWrapped(s, "", line);
   addChoices(s, "  --mode MODE", kModes, defaults.options.mode);
   s += R"(  --max-angle DEG      acute: every angle below DEG (60 < DEG <= 90, default 90), certified
                        exactly. auto: the lowest bound the run reaches, said on stderr. At or

@@ -34,12 +34,13 @@ Mesh twoTriangles() {
 
 TEST(IoWrite, TriangleFormats) {
   const Mesh m = twoTriangles();
-  EXPECT_EQ(formatNode(m),
-            "# written by acutemesh, indices 0-based\n4 2 0 0\n0 0 0\n1 2 0\n2 2 1\n3 0 1\n");
+  // No markers in the mesh: Triangle's defaults, 1 on the boundary (here every vertex, edge).
+  EXPECT_EQ(formatNode(m), "# written by acutemesh, indices 0-based\n4 2 0 1\n0 0 0 1\n1 2 0 1\n"
+                           "2 2 1 1\n3 0 1 1\n");
   EXPECT_EQ(formatEle(m), "# written by acutemesh, indices 0-based\n2 3 0\n0 0 1 2\n1 0 2 3\n");
   EXPECT_EQ(formatPoly(m),
-            "# written by acutemesh, indices 0-based\n4 2 0 0\n0 0 0\n1 2 0\n2 2 1\n3 0 1\n"
-            "4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n");
+            "# written by acutemesh, indices 0-based\n4 2 0 1\n0 0 0 1\n1 2 0 1\n2 2 1 1\n"
+            "3 0 1 1\n4 1\n0 0 1 1\n1 1 2 1\n2 2 3 1\n3 3 0 1\n0\n");
 }
 
 TEST(IoWrite, OffObjJson) {
@@ -155,7 +156,8 @@ TEST(IoWrite, WriteMeshFiles) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string base = (dir / "mesh").string();
-  ParseResult r = writeMeshFiles(m, base, {"node", "ele", "poly", "json", "off", "obj", "svg"});
+  ParseResult r = writeMeshFiles(m, base, {"node", "ele", "poly", "json", "off", "obj", "svg",
+                                           "edge", "neigh", "msh", "msh2", "vtu"});
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_EQ(readText(base + ".node"), formatNode(m));
   EXPECT_EQ(readText(base + ".ele"), formatEle(m));
@@ -164,6 +166,11 @@ TEST(IoWrite, WriteMeshFiles) {
   EXPECT_EQ(readText(base + ".off"), formatOff(m));
   EXPECT_EQ(readText(base + ".obj"), formatObj(m));
   EXPECT_EQ(readText(base + ".svg"), formatSvg(m));
+  EXPECT_EQ(readText(base + ".edge"), formatEdge(m));
+  EXPECT_EQ(readText(base + ".neigh"), formatNeigh(m));
+  EXPECT_EQ(readText(base + ".msh"), formatMsh(m));
+  EXPECT_EQ(readText(base + ".v2.msh"), formatMsh2(m));
+  EXPECT_EQ(readText(base + ".vtu"), formatVtu(m));
   // What was written reads back.
   Input in;
   r = readInputFile(base + ".poly", in);
@@ -178,8 +185,8 @@ TEST(IoWrite, WriteMeshFiles) {
   const std::string base2 = (dir / "other").string();
   r = writeMeshFiles(m, base2, {"node", "stl"});
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.message, "expected an output format among node, ele, poly, json, off, obj, svg, "
-                       "found 'stl'");
+  EXPECT_EQ(r.message, "expected an output format among node, ele, poly, edge, neigh, json, off, "
+                       "obj, svg, msh, msh2, vtu, found 'stl'");
   EXPECT_FALSE(fs::exists(base2 + ".node"));
   // A place that cannot be written.
   const std::string bad = (dir / "missing" / "mesh").string();

@@ -80,7 +80,8 @@ TEST(Vocabulary, UnknownNamesListTheChoicesAndSuggestTheNearest) {
   EXPECT_EQ(message.find("did you mean"), std::string::npos);
   OutputFormat format;
   EXPECT_FALSE(parseName("png", format, &message));
-  EXPECT_EQ(message, "unknown format 'png' (node, ele, poly, json, off, obj, svg, cgshop)");
+  EXPECT_EQ(message, "unknown format 'png' (node, ele, poly, edge, neigh, json, off, obj, svg, msh, msh2, "
+                     "vtu, cgshop)");
   EXPECT_FALSE(parseName("ofj", format, &message));  // one letter from both off and obj
   EXPECT_EQ(message.find("did you mean"), std::string::npos);
   EXPECT_FALSE(parseName("jsn", format, &message));
@@ -105,18 +106,28 @@ TEST(Vocabulary, OutputFormatsAreTheWriters) {
   EXPECT_EQ(formatMesh(OutputFormat::Off, m), formatOff(m));
   EXPECT_EQ(formatMesh(OutputFormat::Obj, m), formatObj(m));
   EXPECT_EQ(formatMesh(OutputFormat::Svg, m), formatSvg(m));
+  EXPECT_EQ(formatMesh(OutputFormat::Edge, m), formatEdge(m));
+  EXPECT_EQ(formatMesh(OutputFormat::Neigh, m), formatNeigh(m));
+  EXPECT_EQ(formatMesh(OutputFormat::Msh, m), formatMsh(m));
+  EXPECT_EQ(formatMesh(OutputFormat::Msh2, m), formatMsh2(m));
+  EXPECT_EQ(formatMesh(OutputFormat::Vtu, m), formatVtu(m));
   EXPECT_EQ(formatMesh(OutputFormat::Cgshop, m), "");
   for (const OutputFormatInfo& f : kOutputFormats) {
     EXPECT_EQ(&infoOf(f.value), &f);
     EXPECT_EQ(f.needsInstance, f.value == OutputFormat::Cgshop);
-    if (!f.needsInstance) {
+    // Files are BASE.NAME, but for msh2 (BASE.v2.msh: beside BASE.msh, still a .msh file).
+    if (!f.needsInstance && f.value != OutputFormat::Msh2) {
       EXPECT_EQ(std::string(f.extension), "." + std::string(f.name));
     }
+    // Every format a writer: the text is not empty (the solution apart).
+    EXPECT_EQ(formatMesh(f.value, m).empty(), f.needsInstance) << f.name;
   }
+  EXPECT_EQ(std::string(infoOf(OutputFormat::Msh2).extension), ".v2.msh");
   // The solution needs its instance: writeMeshFiles does not take it.
   ParseResult r = writeMeshFiles(m, "/nonexistent/x", {"cgshop"});
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.message, "expected an output format among node, ele, poly, json, off, obj, svg, found 'cgshop'");
+  EXPECT_EQ(r.message, "expected an output format among node, ele, poly, edge, neigh, json, off, obj, svg, "
+                       "msh, msh2, vtu, found 'cgshop'");
 }
 
 TEST(InputPolicy, CgshopInstancesAreExactAndRingsEvenOdd) {

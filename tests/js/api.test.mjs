@@ -3,11 +3,13 @@
 // and, independently, by the properties the mode promises computed here in JavaScript.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 
 import init, { AcuteMeshError, createInstance } from 'acutemesh';
 import initSingle from 'acutemesh/single';
 import {
-  fixtures, load, label, reference, needsReference, referenceFile, referencePolys, instanceFiles, syntheticCgshop,
+  fixtures, load, label, reference, testData, needsReference, referenceFile, referencePolys, instanceFiles, syntheticCgshop,
 } from './helpers.mjs';
 
 const am = await init();
@@ -368,6 +370,48 @@ test('writers: each format reads back or has the right counts', () => {
   assert.match(svg, /^<svg[\s\S]*<\/svg>\s*$/);
   // Plain arrays are accepted as meshes too.
   assert.equal(am.toOBJ({ points: [...m.points], triangles: [...m.triangles] }), am.toOBJ({ ...m, segments: null }));
+});
+
+// The solver formats: well-formed for a mesh of the package, and with markers and attributes
+// passed in typed arrays the very text of the C++ writers' golden files (tests/cpp/test_formats).
+test('writers: edge, neigh, msh, msh2, vtu', () => {
+  const m = am.mesh(am.parsePoly(readFileSync(join(testData, 'plate.poly'), 'utf8')), { mode: 'acute' });
+  const n = m.points.length / 2, t = m.triangles.length / 3;
+  const lines = (text) => text.split('\n').filter((l) => l && !l.startsWith('#'));
+  const edge = lines(am.write(m, 'edge'));
+  assert.equal(edge[0], `${edge.length - 1} 1`);
+  assert.equal(edge.length - 1, n + t + 4 - 1, 'Euler: V - E + T = 1 - holes (the plate has 4)');
+  assert.equal(am.write(m, 'edge'), am.toEdge(m));
+  const neigh = lines(am.toNeigh(m));
+  assert.equal(neigh[0], `${t} 3`);
+  assert.equal(neigh.length, t + 1);
+  const msh = am.toMSH(m);
+  assert.match(msh, /^\$MeshFormat\n4\.1 0 8\n\$EndMeshFormat\n\$PhysicalNames\n[\s\S]*\$EndElements\n$/);
+  assert.equal(am.write(m, 'msh'), msh);
+  assert.match(am.toMSH2(m), /^\$MeshFormat\n2\.2 0 8\n[\s\S]*\$EndElements\n$/);
+  assert.equal(am.write(m, 'msh2'), am.toMSH2(m));
+  const vtu = am.toVTU(m);
+  assert.match(vtu, new RegExp(`<Piece NumberOfPoints="${n}" NumberOfCells="\\d+">`));
+  assert.match(vtu, /<\/VTKFile>\n$/);
+  assert.equal(am.write(m, 'vtu'), vtu);
+
+  // Two squares split by a segment, markers and attributes by hand, vertex 6 unused.
+  const squares = {
+    points: [0, 0, 1, 0, 2, 0, 2, 1, 1, 1, 0, 1, 5, 5],
+    triangles: [0, 1, 4, 0, 4, 5, 1, 2, 3, 1, 3, 4],
+    segments: [0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 1, 4],
+    vertexMarkers: Int32Array.of(5, 5, 0, -2, 7, 7, 0),
+    segmentMarkers: Int32Array.of(5, 5, 0, -2, 7, 7, 3),
+    triangleAttributes: Float64Array.of(1, 1, 2.5, 2.5),
+  };
+  const golden = (ext) => readFileSync(join(testData, 'io', 'two-squares', `marked${ext}`), 'utf8');
+  for (const f of ['node', 'ele', 'edge', 'neigh', 'msh', 'msh2', 'vtu']) {
+    const info = am.vocabulary.outputFormats.find((e) => e.name === f);
+    assert.equal(am.write(squares, f), golden(info.extension), f);
+  }
+  // Arrays of the wrong kind or length are Triangle's defaults, not an error.
+  const plain = { ...squares, vertexMarkers: [5, 5, 0, -2, 7, 7, 0], segmentMarkers: Int32Array.of(1) };
+  assert.match(am.toNode(plain), /\n2 2 0 1\n3 2 1 1\n/);
 });
 
 test('acutemesh/single gives the same meshes', async () => {

@@ -40,3 +40,21 @@ test('wasm and native meshes are identical', (t) => expectSameMeshes(t, fixtures
 
 const title = 'wasm and native meshes are identical on the reference .poly inputs';
 test(title, needsReference(title), (t) => expectSameMeshes(t, referencePolys()));
+
+// The package's writers write what the CLI writes for the same mesh, byte for byte: every
+// format of the vocabulary (but the CG:SHOP solution), on a plate and on a fixture with
+// segment markers and regions.
+test('every writer writes what the CLI writes', (t) => {
+  const dir = mkdtempSync(join(tmpdir(), 'acutemesh-native-'));
+  t.after(() => rmSync(dir, { recursive: true, force: true }));
+  const formats = am.vocabulary.outputFormats.filter((f) => !f.needsInstance);
+  for (const path of [join(root, 'tests', 'data', 'plate.poly'), join(root, 'tests', 'data', 'io', 'marked-regions.poly')]) {
+    const base = join(dir, 'out');
+    const args = ['--mode', 'acute', '--format', formats.map((f) => f.name).join(','), '-o', base, path];
+    const run = spawnSync(cli, args, { encoding: 'utf8' });
+    assert.equal(run.status, 0, `${cli} ${args.join(' ')}: ${run.stderr}`);
+    const m = am.mesh(load(am, path), { mode: 'acute' });
+    for (const f of formats)
+      assert.equal(am.write(m, f.name), readFileSync(base + f.extension, 'utf8'), `${label(path)}: ${f.name}`);
+  }
+});

@@ -74,7 +74,7 @@ test('every output format has its writer, and write(mesh, name) is it', () => {
     else assert.equal(am.write(m, f.name), am[method](m));
   }
   assert.throws(() => am.write(m, 'stl'), (e) => e instanceof AcuteMeshError && e.code === 'BAD_INPUT' &&
-    e.message === "unknown format 'stl' (node, ele, poly, json, off, obj, svg, cgshop)");
+    e.message === "unknown format 'stl' (node, ele, poly, edge, neigh, json, off, obj, svg, msh, msh2, vtu, cgshop)");
   assert.throws(() => am.write(m, 'jsno'), /did you mean 'json'\?/);
   assert.throws(() => am.write(m), TypeError);
 });

@@ -121,6 +121,12 @@ function toMesh(m, what = 'mesh') {
     segments: m.segments == null ? new Uint32Array(0) : toIndices(m.segments, `${what}.segments`, 2),
     vertexKind: m.vertexKind instanceof Uint8Array ? m.vertexKind : new Uint8Array(0),
     exactPoints: toExactPoints(m.exactPoints, `${what}.exactPoints`),
+    // Markers and region attributes for the writers, as mesh() returns them; the writers use
+    // an array only when it has one entry per item (else Triangle's defaults, no attributes).
+    vertexMarkers: m.vertexMarkers instanceof Int32Array ? m.vertexMarkers : new Int32Array(0),
+    segmentMarkers: m.segmentMarkers instanceof Int32Array ? m.segmentMarkers : new Int32Array(0),
+    triangleAttributes:
+      m.triangleAttributes instanceof Float64Array ? m.triangleAttributes : new Float64Array(0),
   };
   return mesh;
 }
@@ -488,6 +494,11 @@ function makeWriters(call, names) {
     toOFF: formatter('off'),
     toOBJ: formatter('obj'),
     toSVG: formatter('svg'),
+    toEdge: formatter('edge'),
+    toNeigh: formatter('neigh'),
+    toMSH: formatter('msh'),
+    toMSH2: formatter('msh2'),
+    toVTU: formatter('vtu'),
     toCgshop,
   };
 }

@@ -28,7 +28,9 @@ export type FillRule = 'triangle' | 'evenodd' | 'nonzero';
 export type InputFormat = 'unknown' | 'poly' | 'node' | 'json' | 'cgshop';
 
 /** What a mesh can be written as (write(), vocabulary.outputFormats); 'cgshop' needs the instance. */
-export type OutputFormat = 'node' | 'ele' | 'poly' | 'json' | 'off' | 'obj' | 'svg' | 'cgshop';
+export type OutputFormat =
+  | 'node' | 'ele' | 'poly' | 'edge' | 'neigh' | 'json' | 'off' | 'obj' | 'svg' | 'msh' | 'msh2' | 'vtu'
+  | 'cgshop';
 
 /**
  * The core's statuses: mesh() returns 'ok' and 'target-not-met' (MeshResult.status), and
@@ -251,6 +253,14 @@ export interface MeshInput {
   segments?: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
   vertexKind?: Uint8Array;
   exactPoints?: ExactPoint[];
+  /**
+   * For the writers: markers per vertex and per segment edge, attributes per triangle (used
+   * when there is one per item; else markers are 1 on the boundary and 0 inside, and no
+   * attributes are written).
+   */
+  vertexMarkers?: Int32Array;
+  segmentMarkers?: Int32Array;
+  triangleAttributes?: Float64Array;
   options?: Partial<ResolvedOptions>;
 }
 
@@ -363,9 +373,19 @@ export interface AcuteMesh {
   toOFF(mesh: MeshInput): string;
   toOBJ(mesh: MeshInput): string;
   toSVG(mesh: MeshInput): string;
+  /** Triangle's .edge: every edge with its marker (1 on the boundary when none is given). */
+  toEdge(mesh: MeshInput): string;
+  /** Triangle's .neigh: per triangle the one opposite each corner, -1 for none. */
+  toNeigh(mesh: MeshInput): string;
+  /** Gmsh MSH 4.1: region attributes and markers as physical groups; write(mesh, 'msh'). */
+  toMSH(mesh: MeshInput): string;
+  /** Gmsh MSH 2.2 (for older tools), the same groups; write(mesh, 'msh2'). */
+  toMSH2(mesh: MeshInput): string;
+  /** VTK XML unstructured grid (ParaView): markers and attributes as cell and point data. */
+  toVTU(mesh: MeshInput): string;
   /** The CG:SHOP 2025 solution of a mesh of `instance` (parseJson of the instance file). */
   toCgshop(mesh: MeshInput, instance: CgshopInstance): string;
-  /** The writer of a format by its name (the same text as toNode ... toSVG, toCgshop). */
+  /** The writer of a format by its name (the same text as toNode ... toVTU, toCgshop). */
   write(mesh: MeshInput, format: Exclude<OutputFormat, 'cgshop'>): string;
   write(mesh: MeshInput, format: 'cgshop', instance: CgshopInstance): string;
   memory(): MemoryInfo;

@@ -72,26 +72,67 @@ ParseResult readSizeFile(const std::string& path, SizeField& out,
 ParseResult readInputFile(const std::string& path, Input& out);
 
 // Writers return the text. Coordinates are written to read back as the same doubles
-// (shortest round-trip form). .node/.ele/.poly number vertices and items from 0 (as Triangle's
-// -z), which their first line states as a comment; OBJ is 1-based by definition. .poly and
-// JSON read back (parsePoly, parseJson, fill 'triangle') as the mesh's own domain: they hold
-// the mesh vertices, the mesh's segment edges followed by its boundary edges on no input
-// segment (the hull edges of a convexHull or Delaunay mesh), and a hole point strictly inside
-// each bounded region outside the mesh (finding them costs a constrained triangulation of
-// the mesh's vertices when there are holes). OFF and OBJ put z = 0. SVG fits
-// the bounding box into a 1000-unit view with y pointing up (coordinates rounded to 0.01),
-// triangles in one path, segment edges drawn thicker. writeMeshFiles writes BASE.EXT for each
-// format (EXT = the format name); an unknown name fails before anything is written.
-std::string formatNode(const Mesh& m);
-std::string formatEle(const Mesh& m);
-std::string formatPoly(const Mesh& m);  // mesh vertices, segment and boundary edges, holes
+// (shortest round-trip form). .node/.ele/.poly/.edge/.neigh number vertices and items from 0
+// (as Triangle's -z), which their first line states as a comment; OBJ and Gmsh are 1-based by
+// definition. .poly and JSON read back (parsePoly, parseJson, fill 'triangle') as the mesh's
+// own domain: they hold the mesh vertices, the mesh's segment edges followed by its boundary
+// edges on no input segment (the hull edges of a convexHull or Delaunay mesh), and a hole
+// point strictly inside each bounded region outside the mesh (finding them costs a
+// constrained triangulation of the mesh's vertices when there are holes). OFF, OBJ, MSH and
+// VTU put z = 0. SVG fits the bounding box into a 1000-unit view with y pointing up
+// (coordinates rounded to 0.01), triangles in one path, segment edges drawn thicker.
+// writeMeshFiles writes BASE.EXT for each format (EXT = OutputFormatInfo::extension: the
+// format's name, but BASE.v2.msh for msh2); an unknown name fails before anything is written.
+//
+// Markers and attributes. Every writer that has markers writes them whether or not the mesh
+// carries them: Mesh::vertexMarkers / segmentMarkers when they hold one per item, else 0; in
+// both cases a zero marker on the mesh's boundary becomes 1 (Triangle's rule, as adjacency()
+// gives its edgeMarkers). The region attribute Mesh::triangleAttributes is written when it
+// holds one finite number per triangle, and not at all otherwise. The "lines" of MSH and VTU are the mesh's
+// segment edges in order, then its boundary edges on no input segment (marker 1), so that
+// every boundary edge is among them.
+std::string formatNode(const Mesh& m);  // "<#v> 2 0 1": "i x y marker"
+std::string formatEle(const Mesh& m);   // "<#t> 3 0", or "<#t> 3 1" with "i a b c attribute"
+// mesh vertices (with markers), segment and boundary edges ("<#s> 1": "i a b marker", the
+// boundary edges on no segment 1), holes
+std::string formatPoly(const Mesh& m);
+// Triangle's .edge: "<#edges> 1", then "i a b marker" for every edge of the mesh, as
+// adjacency() lists them (a < b, sorted; 0 inside, a boundary edge's zero marker 1).
+std::string formatEdge(const Mesh& m);
+// Triangle's .neigh: "<#triangles> 3", then "i n0 n1 n2": nk the triangle opposite corner k
+// across the edge they share, -1 for none.
+std::string formatNeigh(const Mesh& m);
 // {"vertices": [[x,y]...], "triangles": [[a,b,c]...], "segments": [...]}, "holes": [[x,y]...]
-// when the mesh has holes (segments and holes as in .poly), and when the mesh has exact points (Options::exactFeet) "exactPoints": [[vertex, "x", "y"]...] (decimal
-// rationals "p/q" or integers "p": the exact place of those vertices).
+// when the mesh has holes (segments and holes as in .poly); "vertexMarkers": [m...] (one per
+// vertex) and "segmentMarkers": [m...] (one per "segments" entry) when some marker is not the
+// one a mesh without markers gets (1 on the boundary, 0 elsewhere: a reader without the keys
+// gives those); "triangleAttributes": [a...] (one per triangle) when the mesh has them; and
+// when the mesh has exact points (Options::exactFeet) "exactPoints": [[vertex, "x", "y"]...]
+// (decimal rationals "p/q" or integers "p": the exact place of those vertices).
 std::string formatJson(const Mesh& m);
 std::string formatOff(const Mesh& m);
 std::string formatObj(const Mesh& m);
 std::string formatSvg(const Mesh& m);
+// Gmsh MSH 4.1 ASCII ($MeshFormat 4.1 0 8, $PhysicalNames, $Entities, $Nodes, $Elements).
+// Nodes: every vertex, unused ones too, node tag = vertex index + 1 (so indices agree with
+// .node), in one block on surface 1. Elements: triangle i is element i + 1 (type 2), line j
+// element T + j + 1 (type 1, 2-node), one block per entity. Entities: one surface per distinct
+// region attribute in increasing order (one when the mesh has none), one curve per distinct
+// line marker in increasing order. Physical groups, named in $PhysicalNames: per attribute
+// a 2D group "attribute A" (tag A when A is a positive integer up to 2^31 - 1, else numbered
+// after the largest such tag), or one group 1 "domain" without attributes (tools that keep
+// only physical elements keep the triangles); per marker a 1D group "marker M" (tag M when
+// positive, else -- 0, on inner segments without a marker, and negative markers -- numbered
+// after the largest positive one). Every element is in a physical group.
+std::string formatMsh(const Mesh& m);
+// Gmsh MSH 2.2 ASCII: the same nodes, elements, tags and $PhysicalNames as formatMsh, each
+// element with two tags: its physical group and its entity (elementary) tag.
+std::string formatMsh2(const Mesh& m);
+// VTK XML UnstructuredGrid, ASCII: every vertex a point (z = 0), the triangles (VTK_TRIANGLE)
+// then the lines (VTK_LINE) as cells. PointData "marker" (Int32, per vertex); CellData
+// "marker" (Int32: the line's, 0 for triangles) and, when the mesh has them, "attribute"
+// (Float64: the triangle's, 0 for lines).
+std::string formatVtu(const Mesh& m);
 
 // The CG:SHOP 2025 solution of a mesh of a CG:SHOP instance with `instanceVertexCount` points
 // (Input::pslg.vertexCount()), as the challenge's verifier (pyutils25) reads it:
@@ -108,7 +149,7 @@ std::string formatSvg(const Mesh& m);
 std::string formatCgshopSolution(const Mesh& m, const std::string& instanceUid,
                                  size_t instanceVertexCount);
 
-// The writer of `format` above (formatNode ... formatSvg); empty for OutputFormat::Cgshop,
+// The writer of `format` above (formatNode ... formatVtu); empty for OutputFormat::Cgshop,
 // which needs the instance (formatCgshopSolution).
 std::string formatMesh(OutputFormat format, const Mesh& m);
 

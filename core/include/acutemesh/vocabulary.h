@@ -16,7 +16,7 @@ namespace acutemesh {
 enum class InputFormat { Unknown, Poly, Node, JsonPslg, CgshopInstance };
 
 // What a mesh can be written as (io.h: formatMesh, writeMeshFiles, formatCgshopSolution).
-enum class OutputFormat { Node, Ele, Poly, Json, Off, Obj, Svg, Cgshop };
+enum class OutputFormat { Node, Ele, Poly, Edge, Neigh, Json, Off, Obj, Svg, Msh, Msh2, Vtu, Cgshop };
 
 template <class Enum>
 struct Named {
@@ -76,15 +76,28 @@ struct OutputFormatInfo {
 };
 
 inline constexpr OutputFormatInfo kOutputFormats[] = {
-    {OutputFormat::Node, "node", ".node", "text/plain", true, false, "Triangle's .node: the vertices"},
-    {OutputFormat::Ele, "ele", ".ele", "text/plain", false, false, "Triangle's .ele: the triangles"},
+    {OutputFormat::Node, "node", ".node", "text/plain", true, false,
+     "Triangle's .node: the vertices and their boundary markers"},
+    {OutputFormat::Ele, "ele", ".ele", "text/plain", false, false,
+     "Triangle's .ele: the triangles (and their region attributes)"},
     {OutputFormat::Poly, "poly", ".poly", "text/plain", true, false,
-     "Triangle's .poly: the vertices and the edges on input segments"},
+     "Triangle's .poly: the vertices and the edges on input segments, with markers"},
+    {OutputFormat::Edge, "edge", ".edge", "text/plain", false, false,
+     "Triangle's .edge: every edge with its boundary marker"},
+    {OutputFormat::Neigh, "neigh", ".neigh", "text/plain", false, false,
+     "Triangle's .neigh: each triangle's three neighbours"},
     {OutputFormat::Json, "json", ".json", "application/json", false, false,
      "acutemesh JSON: vertices, triangles, segment edges and exact points"},
     {OutputFormat::Off, "off", ".off", "text/plain", true, false, "OFF (z = 0)"},
     {OutputFormat::Obj, "obj", ".obj", "model/obj", true, false, "Wavefront OBJ (z = 0)"},
     {OutputFormat::Svg, "svg", ".svg", "image/svg+xml", true, false, "an SVG picture of the mesh"},
+    {OutputFormat::Msh, "msh", ".msh", "text/plain", true, false,
+     "Gmsh MSH 4.1: regions and markers as physical groups"},
+    // BASE.v2.msh: beside BASE.msh, and still .msh for the readers that go by extension.
+    {OutputFormat::Msh2, "msh2", ".v2.msh", "text/plain", true, false,
+     "Gmsh MSH 2.2 (older tools): regions and markers as physical groups"},
+    {OutputFormat::Vtu, "vtu", ".vtu", "application/xml", true, false,
+     "VTK XML unstructured grid (ParaView): markers and attributes as cell and point data"},
     {OutputFormat::Cgshop, "cgshop", ".solution.json", "application/json", false, true,
      "a CG:SHOP 2025 solution (CG:SHOP input only)"},
 };

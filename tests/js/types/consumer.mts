@@ -21,6 +21,8 @@ export async function use(text: string): Promise<number> {
   const asked: number | 'auto' = auto.options.maxAngle;
   const ok: boolean = am.validate(pslg, m).ok && stats.certified && m.status === 'ok';
   const files: string[] = [am.toNode(m), am.toEle(m), am.toPoly(m), am.toOBJ(m), am.toSVG(m), am.toJson(m), am.toOFF(m)];
+  const solverFiles: string[] = [am.toEdge(m), am.toNeigh(m), am.toMSH(m), am.toMSH2(m), am.toVTU(m), am.write(m, 'msh2')];
+  am.toMSH({ ...m, vertexMarkers: new Int32Array(0), segmentMarkers: new Int32Array(0), triangleAttributes: new Float64Array(0) });
   const x: number = m.points[0] + m.triangles[0] + m.segments.length + m.vertexKind.length;
   am.mesh({ points: [[0, 0], [1, 0], [0, 1]] }, { mode: 'delaunay' });
   am.mesh(rings);
@@ -31,7 +33,7 @@ export async function use(text: string): Promise<number> {
   const solution: string = am.write(am.mesh(parsed, { mode }), 'cgshop', parsed);
   const kind: VertexKindName = am.vocabulary.vertexKinds[m.vertexKind[0]].name;
   const quality: number = am.vocabulary.defaults.qualityMinAngle;
-  void [svg, solution, kind, quality, parsed.format === 'cgshop'];
+  void [svg, solution, kind, quality, parsed.format === 'cgshop', solverFiles];
   try {
     am.mesh({ points: [0, 0] });
   } catch (e) {
