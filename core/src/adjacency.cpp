@@ -2,7 +2,7 @@
 // triangle list alone (so it serves any mesh, not only one mesh() has just made).
 #include <algorithm>
 
-#include "acutemesh/acutemesh.h"
+#include "adjacency.h"
 
 namespace acutemesh {
 
@@ -33,21 +33,38 @@ uint32_t nextEdge(uint32_t e) { return e - e % 3 + (e % 3 + 1) % 3; }
 
 }  // namespace
 
-Adjacency adjacency(const Mesh& mesh) {
-  Adjacency a;
+namespace detail {
+
+HalfEdges halfEdges(const Mesh& mesh) {
+  HalfEdges h;
   const std::vector<uint32_t>& tri = mesh.triangles;
   const size_t halfEdges = tri.size() - tri.size() % 3;
   const Outgoing out(tri, mesh.vertexCount());
-
-  a.halfedges.assign(halfEdges, -1);
+  h.twin.assign(halfEdges, -1);
   for (uint32_t e = 0; e < halfEdges; ++e) {
-    if (a.halfedges[e] != -1) continue;
+    if (h.twin[e] != -1) continue;
     const int64_t twin = out.find(tri, tri[nextEdge(e)], tri[e]);
-    if (twin >= 0 && a.halfedges[size_t(twin)] == -1) {
-      a.halfedges[e] = int32_t(twin);
-      a.halfedges[size_t(twin)] = int32_t(e);
+    if (twin >= 0 && h.twin[size_t(twin)] == -1) {
+      h.twin[e] = int32_t(twin);
+      h.twin[size_t(twin)] = int32_t(e);
     }
   }
+  h.segmentEdge.assign(mesh.segments.size() / 2, -1);
+  for (size_t s = 0; s < h.segmentEdge.size(); ++s) {
+    const uint32_t u = mesh.segments[2 * s], w = mesh.segments[2 * s + 1];
+    if (u >= mesh.vertexCount() || w >= mesh.vertexCount()) continue;
+    int64_t e = out.find(tri, u, w);
+    if (e < 0) e = out.find(tri, w, u);
+    h.segmentEdge[s] = int32_t(e);
+  }
+  return h;
+}
+
+Adjacency adjacency(const Mesh& mesh, HalfEdges&& h) {
+  Adjacency a;
+  const std::vector<uint32_t>& tri = mesh.triangles;
+  const size_t halfEdges = tri.size() - tri.size() % 3;
+  a.halfedges = std::move(h.twin);
 
   a.neighbors.resize(halfEdges);
   for (uint32_t e = 0; e < halfEdges; ++e) {
@@ -58,11 +75,8 @@ Adjacency adjacency(const Mesh& mesh) {
   // Each undirected edge once, from its smaller end; its marker from the segment on it.
   std::vector<int32_t> markerOf(halfEdges, 0);
   const bool marked = mesh.segmentMarkers.size() * 2 == mesh.segments.size();
-  for (size_t s = 0; 2 * s + 1 < mesh.segments.size(); ++s) {
-    const uint32_t u = mesh.segments[2 * s], w = mesh.segments[2 * s + 1];
-    if (u >= mesh.vertexCount() || w >= mesh.vertexCount()) continue;
-    int64_t e = out.find(tri, u, w);
-    if (e < 0) e = out.find(tri, w, u);
+  for (size_t s = 0; s < h.segmentEdge.size(); ++s) {
+    const int32_t e = h.segmentEdge[s];
     if (e < 0) continue;
     const int32_t m = marked ? mesh.segmentMarkers[s] : 0;
     markerOf[size_t(e)] = m;
@@ -107,5 +121,9 @@ Adjacency adjacency(const Mesh& mesh) {
   a.hullStarts.push_back(uint32_t(a.hull.size()));
   return a;
 }
+
+}  // namespace detail
+
+Adjacency adjacency(const Mesh& mesh) { return detail::adjacency(mesh, detail::halfEdges(mesh)); }
 
 }  // namespace acutemesh
