@@ -163,7 +163,8 @@ bool readMarkers(JsonReader& r, const char* what, std::vector<int32_t>& dst) {
 bool checkMarkerCount(const std::vector<int32_t>& markers, size_t count, const char* key,
                       const char* item, size_t line, Ctx& c) {
   if (markers.size() == count) return true;
-  return c.fail(line, "expected " + std::to_string(count) + " markers in \"" + key + "\" (one per " +
+  return c.fail(line, "expected " + std::to_string(count) + (count == 1 ? " marker" : " markers") +
+                          " in \"" + key + "\" (one per " +
                           item + "), found " + std::to_string(markers.size()));
 }
 
