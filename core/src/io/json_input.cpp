@@ -60,10 +60,13 @@ struct JsonDoc {
   std::vector<uint32_t> ringSegments;
   std::vector<uint32_t> ringSizes;  // segments per ring, for "ringMarkers"
   // Markers and regions, with the line of each key for the counts' messages.
-  std::vector<int32_t> vertexMarkers, segmentMarkers, ringMarkers;
-  size_t vertexMarkersLine = 0, segmentMarkersLine = 0, ringMarkersLine = 0, regionsLine = 0;
-  bool hasVertexMarkers = false, hasSegmentMarkers = false, hasRingMarkers = false,
-       hasRegions = false;
+  struct Markers {
+    std::vector<int32_t> values;
+    size_t line = 0;
+    bool given = false;
+  } vertexMarkers, segmentMarkers, ringMarkers;
+  size_t regionsLine = 0;
+  bool hasRegions = false;
   std::vector<Region> regions;
   uint64_t numPoints = 0, numConstraints = 0;
   std::string uid;
@@ -159,13 +162,13 @@ bool readMarkers(JsonReader& r, const char* what, std::vector<int32_t>& dst) {
   });
 }
 
-// A marker array's length: `count` items, one marker each.
-bool checkMarkerCount(const std::vector<int32_t>& markers, size_t count, const char* key,
-                      const char* item, size_t line, Ctx& c) {
-  if (markers.size() == count) return true;
-  return c.fail(line, "expected " + std::to_string(count) + (count == 1 ? " marker" : " markers") +
+// A marker array's length, when given: `count` items, one marker each.
+bool checkMarkerCount(const JsonDoc::Markers& markers, size_t count, const char* key,
+                      const char* item, Ctx& c) {
+  if (!markers.given || markers.values.size() == count) return true;
+  return c.fail(markers.line, "expected " + std::to_string(count) + (count == 1 ? " marker" : " markers") +
                           " in \"" + key + "\" (one per " +
-                          item + "), found " + std::to_string(markers.size()));
+                          item + "), found " + std::to_string(markers.values.size()));
 }
 
 JsonKind keyKind(const std::string& key) {
@@ -209,20 +212,14 @@ bool readMember(JsonReader& r, JsonDoc& d, const std::string& key, size_t keyLin
     return r.array("the \"segments\" array", [&] { return readPair(r, d.segments, "a segment"); });
   if (key == "holes")
     return r.array("the \"holes\" array", [&] { return readPoint(r, d.holes, "a hole"); });
-  if (key == "vertexMarkers") {
-    d.hasVertexMarkers = true;
-    d.vertexMarkersLine = keyLine;
-    return readMarkers(r, "the \"vertexMarkers\" array", d.vertexMarkers);
-  }
-  if (key == "segmentMarkers") {
-    d.hasSegmentMarkers = true;
-    d.segmentMarkersLine = keyLine;
-    return readMarkers(r, "the \"segmentMarkers\" array", d.segmentMarkers);
-  }
-  if (key == "ringMarkers") {
-    d.hasRingMarkers = true;
-    d.ringMarkersLine = keyLine;
-    return readMarkers(r, "the \"ringMarkers\" array", d.ringMarkers);
+  if (key == "vertexMarkers" || key == "segmentMarkers" || key == "ringMarkers") {
+    JsonDoc::Markers& m = key == "vertexMarkers"    ? d.vertexMarkers
+                          : key == "segmentMarkers" ? d.segmentMarkers
+                                                    : d.ringMarkers;
+    m.given = true;
+    m.line = keyLine;
+    const std::string what = "the \"" + key + "\" array";
+    return readMarkers(r, what.c_str(), m.values);
   }
   if (key == "rings") {
     d.hasRings = true;
@@ -335,34 +332,31 @@ bool buildInput(JsonDoc& d, Ctx& c, Input& in) {
         return c.fail(d.objectLine, "expected at most " + std::to_string(kMaxIndexCount) +
                                         " vertices, found " + std::to_string(n));
       if (!checkIndices(d.segments, n, "\"segments\"", c)) return false;
-      if ((d.hasVertexMarkers && !checkMarkerCount(d.vertexMarkers, n, "vertexMarkers", "vertex",
-                                                   d.vertexMarkersLine, c)) ||
-          (d.hasSegmentMarkers &&
-           !checkMarkerCount(d.segmentMarkers, d.segments.size() / 2, "segmentMarkers",
-                             "segment", d.segmentMarkersLine, c)))
+      if (!checkMarkerCount(d.vertexMarkers, n, "vertexMarkers", "vertex", c) ||
+          !checkMarkerCount(d.segmentMarkers, d.segments.size() / 2, "segmentMarkers", "segment",
+                            c))
         return false;
       in.format = InputFormat::JsonPslg;
       in.pslg.points = std::move(d.points);
       in.pslg.holes = std::move(d.holes);
       in.pslg.segments.assign(d.segments.values.begin(), d.segments.values.end());
-      in.pslg.vertexMarkers = std::move(d.vertexMarkers);
-      in.pslg.segmentMarkers = std::move(d.segmentMarkers);
+      in.pslg.vertexMarkers = std::move(d.vertexMarkers.values);
+      in.pslg.segmentMarkers = std::move(d.segmentMarkers.values);
       in.pslg.regions = std::move(d.regions);
       return true;
     }
     case JsonKind::Rings:
-      if (d.hasRingMarkers && !checkMarkerCount(d.ringMarkers, d.ringSizes.size(), "ringMarkers",
-                                                "ring", d.ringMarkersLine, c))
+      if (!checkMarkerCount(d.ringMarkers, d.ringSizes.size(), "ringMarkers", "ring", c))
         return false;
       in.format = InputFormat::JsonPslg;
       in.hasRings = true;
       in.pslg.points = std::move(d.points);
       in.pslg.segments = std::move(d.ringSegments);
       // Each ring's segments take its marker.
-      if (d.hasRingMarkers)
+      if (d.ringMarkers.given)
         for (size_t i = 0; i < d.ringSizes.size(); ++i)
           in.pslg.segmentMarkers.insert(in.pslg.segmentMarkers.end(), d.ringSizes[i],
-                                        d.ringMarkers[i]);
+                                        d.ringMarkers.values[i]);
       in.pslg.regions = std::move(d.regions);
       return true;
     case JsonKind::Cgshop:
