@@ -8,54 +8,68 @@ namespace acutemesh {
 
 namespace {
 
-// The half-edges leaving each vertex, grouped by vertex (counting sort): those of vertex v are
-// order[start[v] .. start[v + 1]).
-struct Outgoing {
-  std::vector<uint32_t> start, order;
-  Outgoing(const std::vector<uint32_t>& tri, size_t vertices) : start(vertices + 1, 0) {
-    for (uint32_t v : tri) ++start[v + 1];
-    for (size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
-    order.resize(tri.size());
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (uint32_t e = 0; e < tri.size(); ++e) order[fill[tri[e]]++] = e;
-  }
-  // A half-edge from a to b, or -1.
-  int64_t find(const std::vector<uint32_t>& tri, uint32_t a, uint32_t b) const {
-    for (uint32_t i = start[a]; i < start[a + 1]; ++i) {
-      const uint32_t e = order[i];
-      if (tri[e - e % 3 + (e % 3 + 1) % 3] == b) return e;
-    }
-    return -1;
-  }
-};
-
 uint32_t nextEdge(uint32_t e) { return e - e % 3 + (e % 3 + 1) % 3; }
 
 }  // namespace
 
 namespace detail {
 
+// The half-edges of each edge meet in the bucket of the edge's smaller end: a counting sort by
+// that end, each entry holding the other end, so the twins are matched from the buckets alone
+// (reading the triangles in order once; following each half-edge to its neighbour's corners
+// instead costs a cache miss per half-edge on a large mesh).
 HalfEdges halfEdges(const Mesh& mesh) {
   HalfEdges h;
   const std::vector<uint32_t>& tri = mesh.triangles;
-  const size_t halfEdges = tri.size() - tri.size() % 3;
-  const Outgoing out(tri, mesh.vertexCount());
+  const size_t halfEdges = tri.size() - tri.size() % 3, n = mesh.vertexCount();
+  struct Entry {
+    uint32_t other;  // the larger end; kMatched once paired
+    uint32_t edge;   // the half-edge, kDown set when it runs from the larger end
+  };
+  constexpr uint32_t kMatched = 0xFFFFFFFFu, kDown = 0x80000000u;
+  auto ends = [&](uint32_t e, uint32_t& lo, uint32_t& hi) {
+    lo = tri[e], hi = tri[nextEdge(e)];
+    if (lo > hi) std::swap(lo, hi);
+    return lo < n && hi < n;
+  };
+  // start[v] .. start[v + 1]: the bucket of vertex v (filled from its end down).
+  std::vector<uint32_t> start(n + 1, 0);
+  uint32_t lo, hi;
+  for (uint32_t e = 0; e < halfEdges; ++e)
+    if (ends(e, lo, hi)) ++start[lo];
+  for (size_t v = 1; v <= n; ++v) start[v] += start[v - 1];
+  std::vector<Entry> bucket(n ? start[n - 1] : 0);
+  if (n) start[n] = start[n - 1];
+  for (uint32_t e = 0; e < halfEdges; ++e)
+    if (ends(e, lo, hi)) bucket[--start[lo]] = {hi, tri[e] == lo ? e : e | kDown};
   h.twin.assign(halfEdges, -1);
-  for (uint32_t e = 0; e < halfEdges; ++e) {
-    if (h.twin[e] != -1) continue;
-    const int64_t twin = out.find(tri, tri[nextEdge(e)], tri[e]);
-    if (twin >= 0 && h.twin[size_t(twin)] == -1) {
-      h.twin[e] = int32_t(twin);
-      h.twin[size_t(twin)] = int32_t(e);
+  for (size_t v = 0; v < n; ++v)
+    for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+      Entry& s = bucket[i];
+      if (s.other == kMatched) continue;
+      for (uint32_t j = i + 1; j < start[v + 1]; ++j) {
+        Entry& t = bucket[j];
+        if (t.other != s.other || ((s.edge ^ t.edge) & kDown) == 0) continue;
+        h.twin[s.edge & ~kDown] = int32_t(t.edge & ~kDown);
+        h.twin[t.edge & ~kDown] = int32_t(s.edge & ~kDown);
+        s.other = t.other = kMatched;
+        break;
+      }
     }
-  }
+  // A segment's half-edge: either of its edge's, found in the bucket of its smaller end.
   h.segmentEdge.assign(mesh.segments.size() / 2, -1);
   for (size_t s = 0; s < h.segmentEdge.size(); ++s) {
-    const uint32_t u = mesh.segments[2 * s], w = mesh.segments[2 * s + 1];
-    if (u >= mesh.vertexCount() || w >= mesh.vertexCount()) continue;
-    int64_t e = out.find(tri, u, w);
-    if (e < 0) e = out.find(tri, w, u);
-    h.segmentEdge[s] = int32_t(e);
+    uint32_t u = mesh.segments[2 * s], w = mesh.segments[2 * s + 1];
+    if (u >= n || w >= n || u == w) continue;
+    if (u > w) std::swap(u, w);
+    for (uint32_t i = start[u]; i < start[u + 1]; ++i) {
+      const uint32_t e = bucket[i].edge & ~kDown;
+      const uint32_t a = tri[e], b = tri[nextEdge(e)];
+      if (std::max(a, b) == w) {
+        h.segmentEdge[s] = int32_t(e);
+        break;
+      }
+    }
   }
   return h;
 }
