@@ -14,12 +14,13 @@ uint32_t nextEdge(uint32_t e) { return e - e % 3 + (e % 3 + 1) % 3; }
 
 namespace detail {
 
+namespace {
+
 // The half-edges of each edge meet in the bucket of the edge's smaller end: a counting sort by
 // that end, each entry holding the other end, so the twins are matched from the buckets alone
 // (reading the triangles in order once; following each half-edge to its neighbour's corners
 // instead costs a cache miss per half-edge on a large mesh).
-HalfEdges halfEdges(const Mesh& mesh) {
-  HalfEdges h;
+std::vector<int32_t> findTwins(const Mesh& mesh) {
   const std::vector<uint32_t>& tri = mesh.triangles;
   const size_t halfEdges = tri.size() - tri.size() % 3, n = mesh.vertexCount();
   struct Entry {
@@ -42,7 +43,7 @@ HalfEdges halfEdges(const Mesh& mesh) {
   if (n) start[n] = start[n - 1];
   for (uint32_t e = 0; e < halfEdges; ++e)
     if (ends(e, lo, hi)) bucket[--start[lo]] = {hi, tri[e] == lo ? e : e | kDown};
-  h.twin.assign(halfEdges, -1);
+  std::vector<int32_t> twin(halfEdges, -1);
   for (size_t v = 0; v < n; ++v)
     for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
       Entry& s = bucket[i];
@@ -50,27 +51,55 @@ HalfEdges halfEdges(const Mesh& mesh) {
       for (uint32_t j = i + 1; j < start[v + 1]; ++j) {
         Entry& t = bucket[j];
         if (t.other != s.other || ((s.edge ^ t.edge) & kDown) == 0) continue;
-        h.twin[s.edge & ~kDown] = int32_t(t.edge & ~kDown);
-        h.twin[t.edge & ~kDown] = int32_t(s.edge & ~kDown);
+        twin[s.edge & ~kDown] = int32_t(t.edge & ~kDown);
+        twin[t.edge & ~kDown] = int32_t(s.edge & ~kDown);
         s.other = t.other = kMatched;
         break;
       }
     }
-  // A segment's half-edge: either of its edge's, found in the bucket of its smaller end.
-  h.segmentEdge.assign(mesh.segments.size() / 2, -1);
-  for (size_t s = 0; s < h.segmentEdge.size(); ++s) {
-    uint32_t u = mesh.segments[2 * s], w = mesh.segments[2 * s + 1];
-    if (u >= n || w >= n || u == w) continue;
-    if (u > w) std::swap(u, w);
-    for (uint32_t i = start[u]; i < start[u + 1]; ++i) {
-      const uint32_t e = bucket[i].edge & ~kDown;
-      const uint32_t a = tri[e], b = tri[nextEdge(e)];
-      if (std::max(a, b) == w) {
-        h.segmentEdge[s] = int32_t(e);
-        break;
-      }
-    }
+  return twin;
+}
+
+// Per segment edge (u, w) a half-edge on it: around u's star by the twins (one half-edge
+// leaving each vertex noted first), both ways where the star is open at the boundary.
+std::vector<int32_t> findSegmentEdges(const Mesh& mesh, const std::vector<int32_t>& twin) {
+  const std::vector<uint32_t>& tri = mesh.triangles;
+  const size_t n = mesh.vertexCount();
+  std::vector<int32_t> found(mesh.segments.size() / 2, -1);
+  if (found.empty()) return found;
+  std::vector<int32_t> leaving(n, -1);
+  for (uint32_t e = 0; e < twin.size(); ++e)
+    if (tri[e] < n) leaving[tri[e]] = int32_t(e);
+  const auto prev = [](uint32_t e) { return nextEdge(nextEdge(e)); };
+  for (size_t s = 0; s < found.size(); ++s) {
+    const uint32_t u = mesh.segments[2 * s], w = mesh.segments[2 * s + 1];
+    if (u >= n || w >= n || leaving[u] < 0) continue;
+    // e leaves u: it is on the edge u-w, or its triangle's edge into u is.
+    auto on = [&](uint32_t e) {
+      if (tri[nextEdge(e)] == w) return int32_t(e);
+      if (tri[prev(e)] == w) return int32_t(prev(e));
+      return int32_t(-1);
+    };
+    const uint32_t first = uint32_t(leaving[u]);
+    int32_t hit = on(first);
+    for (int32_t e = twin[prev(first)]; hit < 0 && e >= 0 && uint32_t(e) != first;
+         e = twin[prev(uint32_t(e))])
+      hit = on(uint32_t(e));
+    for (int32_t t = twin[first]; hit < 0 && t >= 0 && nextEdge(uint32_t(t)) != first;
+         t = twin[nextEdge(uint32_t(t))])
+      hit = on(nextEdge(uint32_t(t)));
+    found[s] = hit;
   }
+  return found;
+}
+
+}  // namespace
+
+HalfEdges halfEdges(const Mesh& mesh, std::vector<int32_t> twin) {
+  HalfEdges h;
+  h.twin = twin.size() == mesh.triangles.size() - mesh.triangles.size() % 3 ? std::move(twin)
+                                                                            : findTwins(mesh);
+  h.segmentEdge = findSegmentEdges(mesh, h.twin);
   return h;
 }
 

@@ -1,5 +1,7 @@
 // The half-edge twins of an output mesh, shared by adjacency() and the output labels
-// (labels.h), so that a mesh asked for both finds them once.
+// (labels.h), so that a mesh asked for both finds them once. mesh() knows them from its store
+// (extractMesh, the parts' assembly) and hands them over in Mesh::adjacency.halfedges; any
+// other mesh has them found from its triangles.
 #pragma once
 
 #include <cstdint>
@@ -14,7 +16,9 @@ struct HalfEdges {
   std::vector<int32_t> segmentEdge;  // per Mesh::segments edge: a half-edge on it, -1 none
 };
 
-HalfEdges halfEdges(const Mesh& mesh);
+// The mesh's half-edges: `twin` as given when it has one per half-edge, else found from the
+// triangles.
+HalfEdges halfEdges(const Mesh& mesh, std::vector<int32_t> twin = {});
 
 // adjacency(mesh) from its half-edges (halfEdges(mesh)).
 Adjacency adjacency(const Mesh& mesh, HalfEdges&& h);

@@ -1,5 +1,6 @@
 // Output labels (labels.h). Every rule is a pass over the mesh's arrays; the half-edge twins
-// are the only thing built per triangle, and Options::adjacency keeps them.
+// (the store's, or found) are the only thing held per half-edge, and Options::adjacency keeps
+// them.
 #include "labels.h"
 
 #include <algorithm>
@@ -166,7 +167,8 @@ void attributeTriangles(const Pslg& in, const Pslg& reported, const HalfEdges& h
 
 HalfEdges labelMesh(const Pslg& input, const Pslg& reported, Mesh& mesh,
                     std::vector<std::string>& warnings) {
-  HalfEdges h = halfEdges(mesh);
+  HalfEdges h = halfEdges(mesh, std::move(mesh.adjacency.halfedges));
+  mesh.adjacency = Adjacency{};
   markSegments(input, h, mesh);
   markVertices(input, h, mesh);
   attributeTriangles(input, reported, h, mesh, warnings);

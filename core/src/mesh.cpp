@@ -118,10 +118,19 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
   mesh.triangles.resize(3 * size_t(triangles));
   mesh.segments.clear();
   mesh.segmentInput.clear();
+  // The twins come from the store's (the output keeps each triangle's corners in order), for
+  // the output labels (labels.h): far cheaper than finding them again.
+  std::vector<uint32_t> outputOf(slots, kNone);
+  for (uint32_t t = 0, i = 0; t < slots; ++t)
+    if (inside[t]) outputOf[t] = i++;
+  std::vector<int32_t>& twin = mesh.adjacency.halfedges;
+  twin.assign(3 * size_t(triangles), -1);
   uint32_t* out = mesh.triangles.data();
   for (uint32_t t = 0; t < slots; ++t) {
     if (!inside[t]) continue;
     for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+      const uint32_t o = T.opp[e];
+      if (inside[o / 3]) twin[size_t(out - mesh.triangles.data())] = int32_t(3 * outputOf[o / 3] + o % 3);
       *out++ = index[T.tri[e]];
       // A fixed edge on an input segment is reported once, from an inside triangle. (Hull
       // edges fixed for refinement lie on no segment.)

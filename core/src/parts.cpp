@@ -274,11 +274,21 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     return index[v];
   };
   bool missed = false, cancelled = false;
+  // The whole's twins from the parts' (each part's run leaves its store's in
+  // Mesh::adjacency.halfedges; no edge joins two parts). A part still in T's triangles has
+  // none: the output labels then find them.
+  std::vector<int32_t>& twin = mesh.adjacency.halfedges;
+  bool twinsKnown = true;
   for (uint32_t p = 0; p < count; ++p) {
     Part& part = parts[p];
     const Mesh& m = part.result.mesh;
     missed |= !part.result.stats.targetMet || m.triangles.empty();
     cancelled |= part.result.status == Status::Cancelled;
+    twinsKnown &= !m.triangles.empty() && m.adjacency.halfedges.size() == m.triangles.size();
+    if (twinsKnown) {
+      const int32_t offset = int32_t(mesh.triangles.size());
+      for (int32_t t : m.adjacency.halfedges) twin.push_back(t < 0 ? -1 : t + offset);
+    }
     if (m.triangles.empty()) {
       for (uint32_t t : part.triangles)
         for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
@@ -303,6 +313,7 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     for (uint32_t s : m.segmentInput) mesh.segmentInput.push_back(part.origin[s]);
     part.result = Result{};
   }
+  if (!twinsKnown) twin.clear();
   // A part short of its target is counted by the caller's certificate, which names the places
   // in the whole's numbering; only why it stopped is said here (a cancel that came while the
   // parts left were only improving leaves a mesh that meets the target).

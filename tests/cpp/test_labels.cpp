@@ -148,6 +148,12 @@ TEST(Labels, SplitRectangleInEveryMode) {
             << what;
       }
       expectLabels(in, o, r, true, what);
+      // The twins the store gave (Options::adjacency) are the ones found from the triangles.
+      Options asked = o;
+      asked.adjacency = true;
+      const Result withAdjacency = mesh(in, asked);
+      EXPECT_EQ(withAdjacency.mesh.adjacency.halfedges, adjacency(r.mesh).halfedges) << what;
+      EXPECT_TRUE(r.mesh.adjacency.halfedges.empty()) << what << ": adjacency not asked for";
       if (HasFailure()) return;
     }
 }
@@ -276,6 +282,12 @@ TEST(Labels, ArchipelagoByPartsOnAnyThreads) {
     EXPECT_EQ(m.vertexMarkers[v], 100 + island) << "vertex " << v;
     if (::testing::Test::HasFailure()) return;
   }
+  // The twins the parts' stores gave are the ones found from the triangles.
+  o.adjacency = true;
+  const Result withAdjacency = mesh(in, o);
+  EXPECT_EQ(withAdjacency.mesh.adjacency.halfedges, adjacency(m).halfedges);
+  EXPECT_EQ(withAdjacency.mesh.adjacency.edgeMarkers, adjacency(m).edgeMarkers);
+  o.adjacency = false;
   o.threads = 2;
   const Result two = mesh(in, o);
   EXPECT_EQ(two.mesh.triangles, m.triangles);
