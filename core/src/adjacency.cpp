@@ -82,10 +82,14 @@ std::vector<int32_t> findSegmentEdges(const Mesh& mesh, const std::vector<int32_
     };
     const uint32_t first = uint32_t(leaving[u]);
     int32_t hit = on(first);
-    for (int32_t e = twin[prev(first)]; hit < 0 && e >= 0 && uint32_t(e) != first;
+    // (Twins that are not a mesh's could circle without coming back: steps are capped.)
+    size_t steps = 0;
+    for (int32_t e = twin[prev(first)]; hit < 0 && e >= 0 && uint32_t(e) != first &&
+                                        ++steps < twin.size();
          e = twin[prev(uint32_t(e))])
       hit = on(uint32_t(e));
-    for (int32_t t = twin[first]; hit < 0 && t >= 0 && nextEdge(uint32_t(t)) != first;
+    for (int32_t t = twin[first]; hit < 0 && t >= 0 && nextEdge(uint32_t(t)) != first &&
+                                  ++steps < twin.size();
          t = twin[nextEdge(uint32_t(t))])
       hit = on(nextEdge(uint32_t(t)));
     found[s] = hit;
