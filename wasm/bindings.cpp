@@ -74,12 +74,32 @@ val stringsToJs(const std::vector<std::string>& strings) {
   return out;
 }
 
-Pslg pslgFromJs(const val& points, const val& segments, const val& holes) {
+// `labels` (undefined, or the facade's checked {vertexMarkers, segmentMarkers, regions}, the
+// regions as a Float64Array of x, y, attribute, maxArea per region).
+Pslg pslgFromJs(const val& points, const val& segments, const val& holes,
+                const val& labels = val::undefined()) {
   Pslg p;
   p.points = fromJs<double>(points);
   p.segments = fromJs<uint32_t>(segments);
   p.holes = fromJs<double>(holes);
+  if (labels.isUndefined()) return p;
+  p.vertexMarkers = fromJs<int32_t>(labels["vertexMarkers"]);
+  p.segmentMarkers = fromJs<int32_t>(labels["segmentMarkers"]);
+  const std::vector<double> regions = fromJs<double>(labels["regions"]);
+  for (size_t i = 0; i + 3 < regions.size(); i += 4) {
+    Region r;
+    r.x = regions[i], r.y = regions[i + 1], r.attribute = regions[i + 2], r.maxArea = regions[i + 3];
+    p.regions.push_back(r);
+  }
   return p;
+}
+
+// Regions out as the facade takes them in: x, y, attribute, maxArea per region.
+val regionsToJs(const std::vector<Region>& regions) {
+  std::vector<double> flat;
+  flat.reserve(4 * regions.size());
+  for (const Region& r : regions) flat.insert(flat.end(), {r.x, r.y, r.attribute, r.maxArea});
+  return toJs(flat);
 }
 
 Mesh meshFromJs(const val& m) {
@@ -88,7 +108,9 @@ Mesh meshFromJs(const val& m) {
   mesh.triangles = fromJs<uint32_t>(m["triangles"]);
   mesh.segments = fromJs<uint32_t>(m["segments"]);
   mesh.vertexKind = fromJs<uint8_t>(m["vertexKind"]);
-  mesh.vertexMarkers = fromJs<int32_t>(m["vertexMarkers"]);  // for the writers
+  // (Labels as mesh() made them, for the writers; the facade drops those of the wrong length.)
+  mesh.segmentInput = fromJs<uint32_t>(m["segmentInput"]);
+  mesh.vertexMarkers = fromJs<int32_t>(m["vertexMarkers"]);
   mesh.segmentMarkers = fromJs<int32_t>(m["segmentMarkers"]);
   mesh.triangleAttributes = fromJs<double>(m["triangleAttributes"]);
   const val exact = m["exactPoints"];  // checked by the facade: [{vertex, x, y}]
@@ -113,6 +135,7 @@ Options optionsFromJs(const val& o) {
   opt.maxArea = o["maxArea"].as<double>();
   opt.maxSteiner = o["maxSteiner"].as<uint32_t>();
   opt.timeLimit = o["timeLimit"].as<double>();
+  opt.adjacency = !o["adjacency"].isUndefined() && o["adjacency"].as<bool>();
   return opt;
 }
 
@@ -148,9 +171,9 @@ val statsToJs(const Stats& s) {
 // core; a truthy return value asks the core to stop (status Cancelled). The JS facade turns
 // AbortSignals and exceptions thrown by the user's callback into that return value, so no JS
 // exception ever unwinds through C++ frames (which would leak their memory).
-val meshJs(const val& points, const val& segments, const val& holes, const val& options,
-           const val& onProgress) {
-  Pslg input = pslgFromJs(points, segments, holes);
+val meshJs(const val& points, const val& segments, const val& holes, const val& labels,
+           const val& options, const val& onProgress) {
+  Pslg input = pslgFromJs(points, segments, holes, labels);
   Options opt = optionsFromJs(options);
   std::atomic<bool> cancel{false};
   opt.cancel = &cancel;
@@ -167,6 +190,20 @@ val meshJs(const val& points, const val& segments, const val& holes, const val& 
   out.set("triangles", toJs(r.mesh.triangles));
   out.set("segments", toJs(r.mesh.segments));
   out.set("vertexKind", toJs(r.mesh.vertexKind));
+  out.set("segmentInput", toJs(r.mesh.segmentInput));
+  out.set("vertexMarkers", toJs(r.mesh.vertexMarkers));
+  out.set("segmentMarkers", toJs(r.mesh.segmentMarkers));
+  if (!r.mesh.triangleAttributes.empty())
+    out.set("triangleAttributes", toJs(r.mesh.triangleAttributes));
+  if (opt.adjacency) {
+    const Adjacency& a = r.mesh.adjacency;
+    out.set("halfedges", toJs(a.halfedges));
+    out.set("neighbors", toJs(a.neighbors));
+    out.set("edges", toJs(a.edges));
+    out.set("edgeMarkers", toJs(a.edgeMarkers));
+    out.set("hull", toJs(a.hull));
+    out.set("hullStarts", toJs(a.hullStarts));
+  }
   val exact = val::array();
   for (const ExactPoint& p : r.mesh.exactPoints) {
     val e = val::object();
@@ -200,6 +237,9 @@ val inputToJs(const ParseResult& r, const Input& in) {
   out.set("points", toJs(in.pslg.points));
   out.set("segments", toJs(in.pslg.segments));
   out.set("holes", toJs(in.pslg.holes));
+  out.set("vertexMarkers", toJs(in.pslg.vertexMarkers));
+  out.set("segmentMarkers", toJs(in.pslg.segmentMarkers));
+  out.set("regions", regionsToJs(in.pslg.regions));
   out.set("format", std::string(nameOf(in.format)));
   Options implied;
   applyInputPolicy(in, {}, implied);
@@ -280,6 +320,7 @@ val defaultsToJs() {
   o.set("maxArea", d.maxArea);
   o.set("maxSteiner", d.maxSteiner);
   o.set("timeLimit", d.timeLimit);
+  o.set("adjacency", d.adjacency);
   o.set("qualityMinAngle", kQualityDefaultMinAngle);
   // The fill rule the input policy gives rings (fromRings' default, as for JSON rings).
   Options rings;

@@ -2,52 +2,116 @@
 // triangle list alone (so it serves any mesh, not only one mesh() has just made).
 #include <algorithm>
 
-#include "acutemesh/acutemesh.h"
+#include "adjacency.h"
 
 namespace acutemesh {
 
 namespace {
 
-// The half-edges leaving each vertex, grouped by vertex (counting sort): those of vertex v are
-// order[start[v] .. start[v + 1]).
-struct Outgoing {
-  std::vector<uint32_t> start, order;
-  Outgoing(const std::vector<uint32_t>& tri, size_t vertices) : start(vertices + 1, 0) {
-    for (uint32_t v : tri) ++start[v + 1];
-    for (size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
-    order.resize(tri.size());
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (uint32_t e = 0; e < tri.size(); ++e) order[fill[tri[e]]++] = e;
-  }
-  // A half-edge from a to b, or -1.
-  int64_t find(const std::vector<uint32_t>& tri, uint32_t a, uint32_t b) const {
-    for (uint32_t i = start[a]; i < start[a + 1]; ++i) {
-      const uint32_t e = order[i];
-      if (tri[e - e % 3 + (e % 3 + 1) % 3] == b) return e;
-    }
-    return -1;
-  }
-};
-
 uint32_t nextEdge(uint32_t e) { return e - e % 3 + (e % 3 + 1) % 3; }
 
 }  // namespace
 
-Adjacency adjacency(const Mesh& mesh) {
+namespace detail {
+
+namespace {
+
+// The half-edges of each edge meet in the bucket of the edge's smaller end: a counting sort by
+// that end, each entry holding the other end, so the twins are matched from the buckets alone
+// (reading the triangles in order once; following each half-edge to its neighbour's corners
+// instead costs a cache miss per half-edge on a large mesh).
+std::vector<int32_t> findTwins(const Mesh& mesh) {
+  const std::vector<uint32_t>& tri = mesh.triangles;
+  const size_t halfEdges = tri.size() - tri.size() % 3, n = mesh.vertexCount();
+  struct Entry {
+    uint32_t other;  // the larger end; kMatched once paired
+    uint32_t edge;   // the half-edge, kDown set when it runs from the larger end
+  };
+  constexpr uint32_t kMatched = 0xFFFFFFFFu, kDown = 0x80000000u;
+  auto ends = [&](uint32_t e, uint32_t& lo, uint32_t& hi) {
+    lo = tri[e], hi = tri[nextEdge(e)];
+    if (lo > hi) std::swap(lo, hi);
+    return lo < n && hi < n;
+  };
+  // start[v] .. start[v + 1]: the bucket of vertex v (filled from its end down).
+  std::vector<uint32_t> start(n + 1, 0);
+  uint32_t lo, hi;
+  for (uint32_t e = 0; e < halfEdges; ++e)
+    if (ends(e, lo, hi)) ++start[lo];
+  for (size_t v = 1; v <= n; ++v) start[v] += start[v - 1];
+  std::vector<Entry> bucket(n ? start[n - 1] : 0);
+  if (n) start[n] = start[n - 1];
+  for (uint32_t e = 0; e < halfEdges; ++e)
+    if (ends(e, lo, hi)) bucket[--start[lo]] = {hi, tri[e] == lo ? e : e | kDown};
+  std::vector<int32_t> twin(halfEdges, -1);
+  for (size_t v = 0; v < n; ++v)
+    for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+      Entry& s = bucket[i];
+      if (s.other == kMatched) continue;
+      for (uint32_t j = i + 1; j < start[v + 1]; ++j) {
+        Entry& t = bucket[j];
+        if (t.other != s.other || ((s.edge ^ t.edge) & kDown) == 0) continue;
+        twin[s.edge & ~kDown] = int32_t(t.edge & ~kDown);
+        twin[t.edge & ~kDown] = int32_t(s.edge & ~kDown);
+        s.other = t.other = kMatched;
+        break;
+      }
+    }
+  return twin;
+}
+
+// Per segment edge (u, w) a half-edge on it: around u's star by the twins (one half-edge
+// leaving each vertex noted first), both ways where the star is open at the boundary.
+std::vector<int32_t> findSegmentEdges(const Mesh& mesh, const std::vector<int32_t>& twin) {
+  const std::vector<uint32_t>& tri = mesh.triangles;
+  const size_t n = mesh.vertexCount();
+  std::vector<int32_t> found(mesh.segments.size() / 2, -1);
+  if (found.empty()) return found;
+  std::vector<int32_t> leaving(n, -1);
+  for (uint32_t e = 0; e < twin.size(); ++e)
+    if (tri[e] < n) leaving[tri[e]] = int32_t(e);
+  const auto prev = [](uint32_t e) { return nextEdge(nextEdge(e)); };
+  for (size_t s = 0; s < found.size(); ++s) {
+    const uint32_t u = mesh.segments[2 * s], w = mesh.segments[2 * s + 1];
+    if (u >= n || w >= n || leaving[u] < 0) continue;
+    // e leaves u: it is on the edge u-w, or its triangle's edge into u is.
+    auto on = [&](uint32_t e) {
+      if (tri[nextEdge(e)] == w) return int32_t(e);
+      if (tri[prev(e)] == w) return int32_t(prev(e));
+      return int32_t(-1);
+    };
+    const uint32_t first = uint32_t(leaving[u]);
+    int32_t hit = on(first);
+    // (Twins that are not a mesh's could circle without coming back: steps are capped.)
+    size_t steps = 0;
+    for (int32_t e = twin[prev(first)]; hit < 0 && e >= 0 && uint32_t(e) != first &&
+                                        ++steps < twin.size();
+         e = twin[prev(uint32_t(e))])
+      hit = on(uint32_t(e));
+    for (int32_t t = twin[first]; hit < 0 && t >= 0 && nextEdge(uint32_t(t)) != first &&
+                                  ++steps < twin.size();
+         t = twin[nextEdge(uint32_t(t))])
+      hit = on(nextEdge(uint32_t(t)));
+    found[s] = hit;
+  }
+  return found;
+}
+
+}  // namespace
+
+HalfEdges halfEdges(const Mesh& mesh, std::vector<int32_t> twin) {
+  HalfEdges h;
+  h.twin = twin.size() == mesh.triangles.size() - mesh.triangles.size() % 3 ? std::move(twin)
+                                                                            : findTwins(mesh);
+  h.segmentEdge = findSegmentEdges(mesh, h.twin);
+  return h;
+}
+
+Adjacency adjacency(const Mesh& mesh, HalfEdges&& h) {
   Adjacency a;
   const std::vector<uint32_t>& tri = mesh.triangles;
   const size_t halfEdges = tri.size() - tri.size() % 3;
-  const Outgoing out(tri, mesh.vertexCount());
-
-  a.halfedges.assign(halfEdges, -1);
-  for (uint32_t e = 0; e < halfEdges; ++e) {
-    if (a.halfedges[e] != -1) continue;
-    const int64_t twin = out.find(tri, tri[nextEdge(e)], tri[e]);
-    if (twin >= 0 && a.halfedges[size_t(twin)] == -1) {
-      a.halfedges[e] = int32_t(twin);
-      a.halfedges[size_t(twin)] = int32_t(e);
-    }
-  }
+  a.halfedges = std::move(h.twin);
 
   a.neighbors.resize(halfEdges);
   for (uint32_t e = 0; e < halfEdges; ++e) {
@@ -58,11 +122,8 @@ Adjacency adjacency(const Mesh& mesh) {
   // Each undirected edge once, from its smaller end; its marker from the segment on it.
   std::vector<int32_t> markerOf(halfEdges, 0);
   const bool marked = mesh.segmentMarkers.size() * 2 == mesh.segments.size();
-  for (size_t s = 0; 2 * s + 1 < mesh.segments.size(); ++s) {
-    const uint32_t u = mesh.segments[2 * s], w = mesh.segments[2 * s + 1];
-    if (u >= mesh.vertexCount() || w >= mesh.vertexCount()) continue;
-    int64_t e = out.find(tri, u, w);
-    if (e < 0) e = out.find(tri, w, u);
+  for (size_t s = 0; s < h.segmentEdge.size(); ++s) {
+    const int32_t e = h.segmentEdge[s];
     if (e < 0) continue;
     const int32_t m = marked ? mesh.segmentMarkers[s] : 0;
     markerOf[size_t(e)] = m;
@@ -107,5 +168,9 @@ Adjacency adjacency(const Mesh& mesh) {
   a.hullStarts.push_back(uint32_t(a.hull.size()));
   return a;
 }
+
+}  // namespace detail
+
+Adjacency adjacency(const Mesh& mesh) { return detail::adjacency(mesh, detail::halfEdges(mesh)); }
 
 }  // namespace acutemesh

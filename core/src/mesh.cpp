@@ -1,6 +1,7 @@
 // mesh(): the one entry point. Input checks, then the construction steps of build.h in order,
 // then the output mesh and its figures.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +16,7 @@
 #include "angle_bound.h"
 #include "build.h"
 #include "domain_angles.h"
+#include "labels.h"
 #include "parts.h"
 #include "portable_math.h"
 #include "size_field.h"
@@ -50,6 +52,22 @@ std::string checkInput(const Pslg& in) {
                std::to_string(n) + " vertices";
   for (size_t h = 0; h < in.holes.size(); ++h)
     if (!std::isfinite(in.holes[h])) return "hole " + std::to_string(h / 2) + " is not finite";
+  if (!in.vertexMarkers.empty() && in.vertexMarkers.size() != n)
+    return "vertexMarkers has " + std::to_string(in.vertexMarkers.size()) +
+           " markers; expected one per vertex (" + std::to_string(n) + ") or none";
+  if (!in.segmentMarkers.empty() && in.segmentMarkers.size() != in.segmentCount())
+    return "segmentMarkers has " + std::to_string(in.segmentMarkers.size()) +
+           " markers; expected one per segment (" + std::to_string(in.segmentCount()) +
+           ") or none";
+  for (size_t r = 0; r < in.regions.size(); ++r) {
+    const Region& g = in.regions[r];
+    const std::string region = "region " + std::to_string(r);
+    if (!std::isfinite(g.x) || !std::isfinite(g.y)) return region + " has a non-finite coordinate";
+    if (!std::isfinite(g.attribute)) return region + " has a non-finite attribute";
+    if (!(g.maxArea >= 0) || !std::isfinite(g.maxArea))
+      return region + " has maxArea " + detail::shortestText(g.maxArea) +
+             "; expected a finite number >= 0";
+  }
   return {};
 }
 
@@ -100,10 +118,20 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
             [](const ExactPoint& a, const ExactPoint& b) { return a.vertex < b.vertex; });
   mesh.triangles.resize(3 * size_t(triangles));
   mesh.segments.clear();
+  mesh.segmentInput.clear();
+  // The twins come from the store's (the output keeps each triangle's corners in order), for
+  // the output labels (labels.h): far cheaper than finding them again.
+  std::vector<uint32_t> outputOf(slots, kNone);
+  for (uint32_t t = 0, i = 0; t < slots; ++t)
+    if (inside[t]) outputOf[t] = i++;
+  std::vector<int32_t>& twin = mesh.adjacency.halfedges;
+  twin.assign(3 * size_t(triangles), -1);
   uint32_t* out = mesh.triangles.data();
   for (uint32_t t = 0; t < slots; ++t) {
     if (!inside[t]) continue;
     for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+      const uint32_t o = T.opp[e];
+      if (inside[o / 3]) twin[size_t(out - mesh.triangles.data())] = int32_t(3 * outputOf[o / 3] + o % 3);
       *out++ = index[T.tri[e]];
       // A fixed edge on an input segment is reported once, from an inside triangle. (Hull
       // edges fixed for refinement lie on no segment.)
@@ -111,6 +139,7 @@ void extractMesh(const Triangulation& T, const std::vector<uint8_t>& inside,
       if (onSegment && (!inside[T.opp[e] / 3] || e < T.opp[e])) {
         mesh.segments.push_back(index[T.tri[e]]);
         mesh.segments.push_back(index[T.tri[detail::next(e)]]);
+        mesh.segmentInput.push_back(T.segment.empty() ? 0 : T.segment[e]);
       }
     }
   }
@@ -681,10 +710,41 @@ namespace {
 // underflow. Inputs far from 1 in magnitude (1e300, 1e-300), or with tiny features beside
 // large ones, are scaled by a power of two, meshed, and scaled back: exact, since only
 // exponents change. Inputs no power of two brings into range are refused.
+// The output labels (labels.h) and the adjacency asked for, on the mesh as made (`made`: the
+// input at the mesh's scale; `input` as the caller gave it, which warnings quote). Timed
+// with the output phase.
+void labelOutput(const Pslg& made, const Pslg& input, const Options& options, Result& r) {
+  if (r.status == Status::BadInput) return;
+  const auto start = std::chrono::steady_clock::now();
+  detail::HalfEdges h = detail::labelMesh(made, input, r.mesh, r.stats.warnings);
+  if (options.adjacency) r.mesh.adjacency = detail::adjacency(r.mesh, std::move(h));
+  const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!r.stats.phases.empty()) r.stats.phases.back().seconds += took;
+  r.stats.seconds += took;
+}
+
+// Region points (x, y) as interleaved coordinates, for the range and the scaling.
+std::vector<double> regionPoints(const Pslg& input) {
+  std::vector<double> xy;
+  xy.reserve(2 * input.regions.size());
+  for (const Region& g : input.regions) xy.insert(xy.end(), {g.x, g.y});
+  return xy;
+}
+
+// An area bound scaled by 2^(2 * exponent): one beyond the double range bounds nothing, one
+// below it is as small as can be asked for.
+double scaledArea(double area, int exponent) {
+  if (!(area > 0) || !std::isfinite(area)) return area;
+  const double scaled = std::ldexp(area, 2 * exponent);
+  return std::isinf(scaled) ? 0 : std::max(scaled, std::numeric_limits<double>::denorm_min());
+}
+
 Result meshScaled(const Pslg& input, const Options& options) {
   detail::CoordinateRange range;
   range.add(input.points);
   range.add(input.holes);
+  std::vector<double> regions = regionPoints(input);
+  range.add(regions);
   int exponent = 0;
   if (input.points.size() % 2 == 0 && !detail::exactScale(range, exponent)) {
     Result r;
@@ -695,20 +755,26 @@ Result meshScaled(const Pslg& input, const Options& options) {
     r.stats.inputHoles = uint32_t(input.holes.size() / 2);
     return r;
   }
-  if (exponent == 0) return detail::meshInRange(input, options, 0, true);
+  if (exponent == 0) {
+    Result r = detail::meshInRange(input, options, 0, true);
+    labelOutput(input, input, options, r);
+    return r;
+  }
   Pslg scaled = input;
   detail::scaleExactly(scaled.points, -exponent);
   detail::scaleExactly(scaled.holes, -exponent);
+  detail::scaleExactly(regions, -exponent);
+  for (size_t i = 0; i < scaled.regions.size(); ++i) {
+    scaled.regions[i].x = regions[2 * i];
+    scaled.regions[i].y = regions[2 * i + 1];
+    scaled.regions[i].maxArea = scaledArea(input.regions[i].maxArea, -exponent);
+  }
   Options scaledOptions = options;
   scaledOptions.exactFeet = false;  // their rationals would have to be scaled back too
-  if (options.maxArea > 0 && std::isfinite(options.maxArea)) {
-    // An area bound beyond the double range once scaled bounds nothing; one below it is as
-    // small as can be asked for.
-    double area = std::ldexp(options.maxArea, -2 * exponent);
-    scaledOptions.maxArea = std::isinf(area) ? 0 : std::max(area, std::numeric_limits<double>::denorm_min());
-  }
+  scaledOptions.maxArea = scaledArea(options.maxArea, -exponent);
   detail::scaleSizes(scaledOptions, exponent);
   Result r = detail::meshInRange(scaled, scaledOptions, exponent, true);
+  labelOutput(scaled, input, options, r);
   // Steiner points below 2^-1022 once scaled back would lose bits (subnormal doubles), and
   // the mesh could fold: refused rather than returned inexact.
   if (!detail::scaleExactly(r.mesh.points, exponent)) {
@@ -728,17 +794,10 @@ Result meshScaled(const Pslg& input, const Options& options) {
 // Nothing throws, as promised in acutemesh.h: memory running out (an area bound or a Steiner
 // budget far beyond what fits, a huge input) ends the call with a message instead. Builds
 // without exceptions (Emscripten's default) abort on it instead.
-namespace {
-Result withAdjacency(Result r, const Options& options) {
-  if (options.adjacency) r.mesh.adjacency = adjacency(r.mesh);
-  return r;
-}
-}  // namespace
-
 Result mesh(const Pslg& input, const Options& options) {
 #if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
   try {
-    return withAdjacency(meshScaled(input, options), options);
+    return meshScaled(input, options);
   } catch (const std::bad_alloc&) {
   } catch (const std::length_error&) {
   }
@@ -751,7 +810,7 @@ Result mesh(const Pslg& input, const Options& options) {
   r.stats.inputHoles = uint32_t(input.holes.size() / 2);
   return r;
 #else
-  return withAdjacency(meshScaled(input, options), options);
+  return meshScaled(input, options);
 #endif
 }
 

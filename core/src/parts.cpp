@@ -17,11 +17,13 @@ namespace {
 
 // A part: its triangles (slots of T) and, as a problem of its own, its vertices (input vertex
 // i of `pslg` is T's vertex vertices[i], then kFrame more) and the fixed edges around and
-// inside it as segments.
+// inside it as segments, each with the input segment it lies on (`origin`, to map the part
+// mesh's Mesh::segmentInput back).
 struct Part {
   std::vector<uint32_t> triangles;
   std::vector<uint32_t> vertices;
   Pslg pslg;
+  std::vector<uint32_t> origin;
   Result result;
   std::exception_ptr failure;
 };
@@ -93,8 +95,13 @@ bool buildParts(const Triangulation& T, const std::vector<uint32_t>& partOf, uin
         if (boundary && (T.segment.empty() || T.segment[e] == kNone)) return false;
         if (!boundary && e > T.opp[e]) continue;
         const uint32_t a = at(T.tri[e]), b = at(T.tri[next(e)]);
+        const uint32_t input = T.segment.empty() ? 0 : T.segment[e];
         part.pslg.segments.insert(part.pslg.segments.end(), {a, b});
-        if (!boundary) part.pslg.segments.insert(part.pslg.segments.end(), {b, a});
+        part.origin.push_back(input);
+        if (!boundary) {
+          part.pslg.segments.insert(part.pslg.segments.end(), {b, a});
+          part.origin.push_back(input);
+        }
       }
     for (uint32_t t : part.triangles)  // (every corner, should one touch no fixed edge)
       for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) at(T.tri[e]);
@@ -267,17 +274,29 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     return index[v];
   };
   bool missed = false, cancelled = false;
+  // The whole's twins from the parts' (each part's run leaves its store's in
+  // Mesh::adjacency.halfedges; no edge joins two parts). A part still in T's triangles has
+  // none: the output labels then find them.
+  std::vector<int32_t>& twin = mesh.adjacency.halfedges;
+  bool twinsKnown = true;
   for (uint32_t p = 0; p < count; ++p) {
     Part& part = parts[p];
     const Mesh& m = part.result.mesh;
     missed |= !part.result.stats.targetMet || m.triangles.empty();
     cancelled |= part.result.status == Status::Cancelled;
+    twinsKnown &= !m.triangles.empty() && m.adjacency.halfedges.size() == m.triangles.size();
+    if (twinsKnown) {
+      const int32_t offset = int32_t(mesh.triangles.size());
+      for (int32_t t : m.adjacency.halfedges) twin.push_back(t < 0 ? -1 : t + offset);
+    }
     if (m.triangles.empty()) {
       for (uint32_t t : part.triangles)
         for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
           mesh.triangles.push_back(output(T.tri[e]));
-          if (T.fixed[e] && (partOf[T.opp[e] / 3] != p || e < T.opp[e]))
+          if (T.fixed[e] && (partOf[T.opp[e] / 3] != p || e < T.opp[e])) {
             mesh.segments.insert(mesh.segments.end(), {output(T.tri[e]), output(T.tri[next(e)])});
+            mesh.segmentInput.push_back(T.segment.empty() ? 0 : T.segment[e]);
+          }
         }
       continue;
     }
@@ -291,8 +310,10 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     }
     for (uint32_t v : m.triangles) mesh.triangles.push_back(to[v]);
     for (uint32_t v : m.segments) mesh.segments.push_back(to[v]);
+    for (uint32_t s : m.segmentInput) mesh.segmentInput.push_back(part.origin[s]);
     part.result = Result{};
   }
+  if (!twinsKnown) twin.clear();
   // A part short of its target is counted by the caller's certificate, which names the places
   // in the whole's numbering; only why it stopped is said here (a cancel that came while the
   // parts left were only improving leaves a mesh that meets the target).

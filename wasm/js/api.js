@@ -90,6 +90,59 @@ function toIndices(value, what, arity) {
   return out;
 }
 
+// Boundary markers: an Int32Array as is; other arrays checked item by item (an Int32Array
+// would silently wrap 2^31 or truncate 2.5 into another marker).
+function toMarkers(value, what) {
+  if (value instanceof Int32Array) return value;
+  if (!Array.isArray(value) && !(ArrayBuffer.isView(value) && !(value instanceof DataView)))
+    throw new TypeError(`${what} must be an Int32Array or an array of integers, not ${describe(value)}`);
+  const out = new Int32Array(value.length);
+  for (let i = 0; i < value.length; ++i) {
+    const v = value[i];
+    if (typeof v !== 'number' && typeof v !== 'bigint')
+      throw new TypeError(`${what}[${i}] must be a marker (a number), not ${describe(v)}`);
+    const n = Number(v);
+    if (!Number.isInteger(n) || n < -0x80000000 || n > 0x7fffffff)
+      throw badInput(`${what}[${i}] is ${v}, not a marker (a 32-bit integer)`);
+    out[i] = n;
+  }
+  return out;
+}
+
+const REGION_KEYS = ['x', 'y', 'attribute', 'maxArea'];
+
+// MeshResult's arrays with options.adjacency (Adjacency in acutemesh.h).
+export const ADJACENCY_KEYS = ['halfedges', 'neighbors', 'edges', 'edgeMarkers', 'hull', 'hullStarts'];
+
+// Regions [{ x, y, attribute, maxArea? }] into the Float64Array the module takes: x, y,
+// attribute, maxArea (0: none) per region. Values must be numbers; the core checks that they
+// are finite (and maxArea >= 0), naming the region.
+function toRegions(value, what) {
+  if (!Array.isArray(value))
+    throw new TypeError(`${what} must be an array of { x, y, attribute, maxArea? }, not ${describe(value)}`);
+  const out = new Float64Array(4 * value.length);
+  value.forEach((r, i) => {
+    checkObject(r, `${what}[${i}]`);
+    checkKeys(r, REGION_KEYS, `${what}[${i}]`);
+    REGION_KEYS.forEach((key, k) => {
+      const v = r[key];
+      if (v === undefined && (key === 'maxArea' || key === 'attribute')) return;
+      if (typeof v !== 'number')
+        throw new TypeError(`${what}[${i}].${key} must be a number, not ${describe(v)}`);
+      out[4 * i + k] = v;
+    });
+  });
+  return out;
+}
+
+// The module's regions (x, y, attribute, maxArea per region) as the API gives them.
+function fromRegions(flat) {
+  const regions = [];
+  for (let i = 0; i + 3 < flat.length; i += 4)
+    regions.push({ x: flat[i], y: flat[i + 1], attribute: flat[i + 2], maxArea: flat[i + 3] });
+  return regions;
+}
+
 function checkObject(value, what) {
   if (typeof value !== 'object' || value === null || Array.isArray(value))
     throw new TypeError(`${what} must be an object, not ${describe(value)}`);
@@ -103,6 +156,12 @@ function toPslg(pslg, names, what = 'pslg') {
     points: toCoordinates(pslg.points, `${what}.points`),
     segments: pslg.segments == null ? new Uint32Array(0) : toIndices(pslg.segments, `${what}.segments`, 2),
     holes: pslg.holes == null ? new Float64Array(0) : toCoordinates(pslg.holes, `${what}.holes`),
+    // Markers and regions, as the module takes them (bindings.cpp, pslgFromJs).
+    labels: {
+      vertexMarkers: pslg.vertexMarkers == null ? new Int32Array(0) : toMarkers(pslg.vertexMarkers, `${what}.vertexMarkers`),
+      segmentMarkers: pslg.segmentMarkers == null ? new Int32Array(0) : toMarkers(pslg.segmentMarkers, `${what}.segmentMarkers`),
+      regions: pslg.regions == null ? new Float64Array(0) : toRegions(pslg.regions, `${what}.regions`),
+    },
     fill: pslg.fill,
     // What a parser read it from (ParsedPslg.format): the core's input policy applies to it.
     format: names.check(pslg.format, 'inputFormat', `${what}.format`, undefined),
@@ -128,6 +187,10 @@ function toMesh(m, what = 'mesh') {
     triangleAttributes:
       m.triangleAttributes instanceof Float64Array ? m.triangleAttributes : new Float64Array(0),
   };
+  // The labels mesh() returns, for the writers that carry them (kept when of their type).
+  for (const [key, type] of [['segmentInput', Uint32Array], ['vertexMarkers', Int32Array],
+    ['segmentMarkers', Int32Array], ['triangleAttributes', Float64Array]])
+    if (m[key] instanceof type) mesh[key] = m[key];
   return mesh;
 }
 
@@ -162,6 +225,11 @@ function checkMeshIndices(mesh, what = 'mesh') {
         throw badInput(`${what}.${key}[${i}] refers to vertex ${a[i]}, but there are only ${n} vertices`);
   }
   if (mesh.vertexKind.length !== n) mesh.vertexKind = new Uint8Array(0);
+  // Labels of another mesh's size are dropped, as vertexKind is (writers then leave them out).
+  const sizes = { segmentInput: mesh.segments.length / 2, vertexMarkers: n,
+    segmentMarkers: mesh.segments.length / 2, triangleAttributes: mesh.triangles.length / 3 };
+  for (const key of Object.keys(sizes))
+    if (mesh[key] !== undefined && mesh[key].length !== sizes[key]) delete mesh[key];
   mesh.exactPoints.forEach((p, i) => {
     if (p.vertex >= n)
       throw badInput(`${what}.exactPoints[${i}] refers to vertex ${p.vertex}, but there are only ${n} vertices`);
@@ -217,7 +285,7 @@ function toOptions(options, input, core, where) {
   const { names, defaults } = core;
   const mode = names.check(options.mode, 'mode', 'mode', defaults.mode);
   const fill = names.check(options.fill, 'fill', 'fill rule', input.fill === undefined ? defaults.fill : input.fill);
-  for (const key of ['convexHull', 'exactSegments', 'exactFeet'])
+  for (const key of ['convexHull', 'exactSegments', 'exactFeet', 'adjacency'])
     if (options[key] !== undefined && typeof options[key] !== 'boolean')
       throw new TypeError(`options.${key} must be a boolean, not ${describe(options[key])}`);
   const maxSteiner = numberOption(options, 'maxSteiner', defaults.maxSteiner);
@@ -233,6 +301,7 @@ function toOptions(options, input, core, where) {
     convexHull: flag('convexHull'),
     exactSegments: flag('exactSegments'),
     exactFeet: flag('exactFeet'),
+    adjacency: flag('adjacency'),
     maxAngle: maxAngleOption(options, defaults.maxAngle),
     // The core checks the ranges of these two and names the option when one is wrong.
     minAngle: numberOption(options, 'minAngle', defaults.minAngle),
@@ -265,6 +334,10 @@ function checkText(text, what) {
 function parsed(r) {
   if (!r.ok) throw badInput(r.message);
   const out = { points: r.points, segments: r.segments, holes: r.holes };
+  // Markers and regions when the text has them.
+  if (r.vertexMarkers.length) out.vertexMarkers = r.vertexMarkers;
+  if (r.segmentMarkers.length) out.segmentMarkers = r.segmentMarkers;
+  if (r.regions.length) out.regions = fromRegions(r.regions);
   if (r.fill !== undefined) out.fill = r.fill;
   out.format = r.format;
   if (r.format === 'cgshop') out.instanceUid = r.instanceUid;
@@ -282,8 +355,11 @@ function ringsToPslg(rings, options, core) {
   if (!Array.isArray(rings)) throw new TypeError(`rings must be an array of rings, not ${describe(rings)}`);
   if (options === undefined) options = {};
   checkObject(options, 'options');
-  checkKeys(options, ['fill'], 'fromRings()');
+  checkKeys(options, ['fill', 'ringMarkers'], 'fromRings()');
   const fill = core.names.check(options.fill, 'fill', 'fill rule', core.defaults.ringsFill);
+  const ringMarkers = options.ringMarkers === undefined ? undefined : toMarkers(options.ringMarkers, 'options.ringMarkers');
+  if (ringMarkers !== undefined && ringMarkers.length !== rings.length)
+    throw badInput(`options.ringMarkers has ${ringMarkers.length} markers; expected one per ring (${rings.length})`);
   const flat = rings.map((ring, r) => toCoordinates(ring, `rings[${r}]`));
   let total = 0;
   const counts = flat.map((xy, r) => {
@@ -306,7 +382,14 @@ function ringsToPslg(rings, options, core) {
     }
     base += n;
   });
-  return { points, segments, holes: new Float64Array(0), fill };
+  const out = { points, segments, holes: new Float64Array(0), fill };
+  // Each ring's segments take its marker (as the core's "ringMarkers").
+  if (ringMarkers !== undefined) {
+    out.segmentMarkers = new Int32Array(total);
+    base = 0;
+    counts.forEach((n, r) => { out.segmentMarkers.fill(ringMarkers[r], base, base + n); base += n; });
+  }
+  return out;
 }
 
 // The vocabulary is shared by every API object: read-only all the way down.
@@ -536,21 +619,29 @@ function makeApi(factory, compiled, memoryLimit, M) {
       checkSignal(signal);
       if (signal && signal.aborted) throw abortError(signal);
       const progress = progressBridge(onProgress, signal);
-      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, opts, progress.callback));
+      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, input.labels, opts,
+        progress.callback));
       progress.rethrow();
       if (r.status === 'cancelled') throw abortError(signal);
       if (r.status === 'bad-input') throw badInput(r.message);
-      return {
+      const result = {
         points: r.points,
         triangles: r.triangles,
         segments: r.segments,
+        segmentInput: r.segmentInput,
         vertexKind: r.vertexKind,
+        vertexMarkers: r.vertexMarkers,
+        segmentMarkers: r.segmentMarkers,
+        triangleAttributes: r.triangleAttributes,
         exactPoints: r.exactPoints,
         stats: r.stats,
         status: r.status,
         message: r.message,
         options: opts,
       };
+      if (opts.adjacency)
+        for (const key of ADJACENCY_KEYS) result[key] = r[key];
+      return result;
     },
 
     validate(pslg, m, options) {

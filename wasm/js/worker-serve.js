@@ -13,8 +13,11 @@ export function serve(init, post, listen) {
       }
       delete opts.progress;
       const m = api.mesh(pslg, opts);
-      post({ id, type: 'result', mesh: m },
-        [m.points.buffer, m.triangles.buffer, m.segments.buffer, m.vertexKind.buffer]);
+      // Every typed array of the result, each buffer once.
+      const buffers = new Set(Object.values(m)
+        .filter((v) => ArrayBuffer.isView(v))
+        .map((v) => v.buffer));
+      post({ id, type: 'result', mesh: m }, [...buffers]);
     } catch (e) {
       const error = e instanceof Error
         ? { name: e.name, code: e.code, message: e.message }

@@ -49,8 +49,29 @@ export interface Pslg {
   segments: Uint32Array;
   /** x, y of a point inside each hole ('triangle' fill rule only). */
   holes: Float64Array;
+  /** Boundary markers per vertex, when the source has them (Triangle's .poly/.node, JSON "vertexMarkers"). */
+  vertexMarkers?: Int32Array;
+  /** Boundary markers per segment, when the source has them (.poly, JSON "segmentMarkers", rings' "ringMarkers"). */
+  segmentMarkers?: Int32Array;
+  /** Regions, when the source has them (.poly regional attributes, JSON "regions"). */
+  regions?: Region[];
   /** The fill rule the source implies (fromRings, parseJson of rings); mesh() uses it unless options.fill says otherwise. */
   fill?: FillRule;
+}
+
+/**
+ * A region of the domain (Triangle's regional attributes): every triangle reachable from
+ * (x, y) without crossing a segment gets `attribute` (MeshResult.triangleAttributes). A later
+ * region reaching the same triangles wins; a point in no triangle is ignored with a warning in
+ * stats.warnings naming it ("region 2 at (x, y) ...").
+ */
+export interface Region {
+  x: number;
+  y: number;
+  /** Default 0. Must be finite. */
+  attribute?: number;
+  /** Area bound inside the region (0 or left out: none); must be finite and >= 0. */
+  maxArea?: number;
 }
 
 /** What mesh() and validate() accept: typed arrays, flat number arrays, or arrays of pairs. */
@@ -58,6 +79,15 @@ export interface PslgInput {
   points: Float64Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]>;
   segments?: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
   holes?: Float64Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
+  /**
+   * Boundary markers (Triangle's): none, or one 32-bit integer per vertex. They come back in
+   * MeshResult.vertexMarkers. A wrong count is an AcuteMeshError('BAD_INPUT') naming the array.
+   */
+  vertexMarkers?: Int32Array | ArrayLike<number> | null;
+  /** None, or one 32-bit integer per segment; they come back in MeshResult.segmentMarkers. */
+  segmentMarkers?: Int32Array | ArrayLike<number> | null;
+  /** Regions with attributes (and area bounds), as objects; see Region. */
+  regions?: ReadonlyArray<Region> | null;
   fill?: FillRule;
   /** What it was read from (ParsedPslg.format): mesh() applies the input policy for it. */
   format?: InputFormat;
@@ -134,6 +164,11 @@ export interface MeshOptions {
   maxSteiner?: number;
   /** Seconds (0: none). When it ends, the best mesh so far comes back with stats.targetMet false. */
   timeLimit?: number;
+  /**
+   * Also return how the triangles connect (MeshResult.halfedges, neighbors, edges, edgeMarkers,
+   * hull, hullStarts). Default false.
+   */
+  adjacency?: boolean;
   /** Called synchronously from inside mesh() after each phase and now and then while refining. */
   onProgress?: (progress: Progress) => void;
   /**
@@ -156,6 +191,7 @@ export interface ResolvedOptions {
   maxArea: number;
   maxSteiner: number;
   timeLimit: number;
+  adjacency: boolean;
 }
 
 export interface MeshStats {
@@ -222,6 +258,30 @@ export interface MeshResult {
   triangles: Uint32Array;
   /** a, b per mesh edge lying on an input segment. */
   segments: Uint32Array;
+  /** Per mesh segment edge (segments[2i], segments[2i+1]): the input segment it lies on. */
+  segmentInput: Uint32Array;
+  /**
+   * Per vertex, Triangle's rule: an input vertex keeps its marker; a Steiner point on a
+   * segment, and an input vertex with marker 0 on a segment with one, take the segment's (the
+   * lowest-numbered such segment's); a zero marker on the mesh's boundary becomes 1.
+   */
+  vertexMarkers: Int32Array;
+  /** Per mesh segment edge: its input segment's marker (a zero one on the boundary: 1). */
+  segmentMarkers: Int32Array;
+  /** Per triangle: the attribute of its region (0 outside every region); undefined when the input has no regions. */
+  triangleAttributes?: Float64Array;
+  /** options.adjacency: per half-edge 3t + k (corner k to corner k + 1 of triangle t), its twin; -1 on the boundary (Delaunator's halfedges). */
+  halfedges?: Int32Array;
+  /** options.adjacency: 3 per triangle, the triangle opposite corner k; -1 none. */
+  neighbors?: Int32Array;
+  /** options.adjacency: a, b (a < b) per undirected edge, sorted. */
+  edges?: Uint32Array;
+  /** options.adjacency: per edge, the marker of the input segment it lies on; 0 inside, and a zero one on the boundary 1. */
+  edgeMarkers?: Int32Array;
+  /** options.adjacency: the boundary as closed loops of vertices, the mesh on the left (outer loops counter-clockwise, holes clockwise); loop i is hull[hullStarts[i] .. hullStarts[i + 1]). */
+  hull?: Uint32Array;
+  /** options.adjacency: where each loop of hull starts, and its length at the end. */
+  hullStarts?: Uint32Array;
   /**
    * Per vertex, a number whose name is vocabulary.vertexKinds[number].name: 0 'input', 1 'unused'
    * (an input vertex no triangle uses: a duplicate, or outside), 2 'segment' (a Steiner point
@@ -252,6 +312,11 @@ export interface MeshInput {
   triangles: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number, number]>;
   segments?: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
   vertexKind?: Uint8Array;
+  /** mesh()'s labels, for the writers that carry them (dropped when not of the mesh's size). */
+  segmentInput?: Uint32Array;
+  vertexMarkers?: Int32Array;
+  segmentMarkers?: Int32Array;
+  triangleAttributes?: Float64Array;
   exactPoints?: ExactPoint[];
   /**
    * For the writers: markers per vertex and per segment edge, attributes per triangle (used
@@ -301,6 +366,8 @@ export type Ring = Float64Array | ArrayLike<number> | ReadonlyArray<readonly [nu
 export interface RingsOptions {
   /** Default 'evenodd'. */
   fill?: FillRule;
+  /** One marker per ring, given to its segments (Pslg.segmentMarkers), as JSON's "ringMarkers". */
+  ringMarkers?: Int32Array | ArrayLike<number>;
 }
 
 /** An entry of a vocabulary table: the name, the core's enum value, one line about it. */

@@ -33,11 +33,14 @@ struct ParseResult {
 // Triangle's .poly: "<#vertices> <dim=2> <#attributes> <#markers>", vertex lines
 // "<id> <x> <y> [attributes] [marker]", "<#segments> <#markers>", segment lines
 // "<id> <a> <b> [marker]", "<#holes>", hole lines "<id> <x> <y>", optional regional
-// attributes (checked for form, then ignored). '#' starts a comment; blank lines are skipped.
-// Indices are 0- or 1-based, as the first vertex id says (another first id: 1-based, with a
-// warning, as Triangle does); segment endpoints come out 0-based. Attributes and markers are
-// ignored, and may be left out as Triangle allows; more fields than the header announces is
-// an error. The hole section may be missing at the end (no holes). A vertex count of 0 means
+// attributes "<#regions>", region lines "<id> <x> <y> <attribute> [maximum area]" (into
+// Pslg::regions; a negative or missing area is none, 0, as in Triangle). '#' starts a
+// comment; blank lines are skipped. Indices are 0- or 1-based, as the first vertex id says
+// (another first id: 1-based, with a warning, as Triangle does); segment endpoints come out
+// 0-based. Vertex and segment markers (32-bit integers) go to Pslg::vertexMarkers and
+// segmentMarkers when the header announces them (a marker left out is 0, as Triangle allows;
+// none announced: the array stays empty); vertex attributes are ignored, and may be left out;
+// more fields than the header announces is an error. The hole section may be missing at the end (no holes). A vertex count of 0 means
 // the vertices are in a separate .node file: pass its text as `nodeText` and its name as
 // `nodeName` (readInputFile reads BASE.node for that).
 ParseResult parsePoly(std::string_view text, const std::string& name, Input& out,
@@ -46,10 +49,14 @@ ParseResult parseNode(std::string_view text, const std::string& name, Input& out
 // JSON (strict RFC 8259 syntax, nesting depth limited): one top-level object, either
 //  - an acutemesh PSLG {"vertices": [[x,y],...], "segments": [[i,j],...], "holes": [[x,y],...]}
 //    (segments, holes optional; "triangles" and "exactPoints", as formatJson writes them,
-//    are ignored), or
+//    are ignored), with optional "vertexMarkers": [m,...] (one per vertex) and
+//    "segmentMarkers": [m,...] (one per segment), 32-bit integers, or
 //  - {"rings": [[[x,y],...],...]}: each ring closes implicitly (a repeated first point at the
 //    end is dropped, with a warning) and becomes vertices plus directed segments in ring
-//    order; sets Input::hasRings, or
+//    order; sets Input::hasRings; optional "ringMarkers": [m,...] (one per ring) gives each
+//    ring's segments that marker, or
+//  Both may have "regions": [[x, y, attribute], or [x, y, attribute, maxArea], ...]
+//  (Pslg::regions; maxArea >= 0, 0 none). Or
 //  - a CG:SHOP 2025 instance ("points_x", "points_y", "region_boundary" (a ring of indices,
 //    becomes segments), "additional_constraints" (index pairs), "instance_uid", "num_points").
 // Keys of different kinds may not be mixed; unknown keys are skipped with a warning.

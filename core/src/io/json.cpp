@@ -189,6 +189,17 @@ bool JsonReader::index(uint64_t& v, const char* expected) {
   return true;
 }
 
+bool JsonReader::int32(int32_t& v, const char* expected) {
+  ws();
+  size_t end;
+  bool integral;
+  if (!scanNumber(end, integral) || !integral) return fail(expected);
+  std::from_chars_result r = std::from_chars(s_.data() + p_, s_.data() + end, v);
+  if (r.ec != std::errc() || r.ptr != s_.data() + end) return fail(expected);
+  p_ = end;
+  return true;
+}
+
 bool JsonReader::skipValue(int depth) {
   ws();
   if (depth > kMaxJsonDepth)

@@ -73,6 +73,8 @@ class JsonReader {
   bool number(double& v, const char* expected);
   // A non-negative integer below 2^32 (vertex index or count).
   bool index(uint64_t& v, const char* expected);
+  // An integer that fits 32 bits, signed (a boundary marker).
+  bool int32(int32_t& v, const char* expected);
   // Parses and discards any value (validating it).
   bool skipValue(int depth);
 

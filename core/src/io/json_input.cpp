@@ -58,6 +58,16 @@ struct JsonDoc {
   std::vector<double> points, holes, px, py;
   IndexList segments, boundary, constraints;
   std::vector<uint32_t> ringSegments;
+  std::vector<uint32_t> ringSizes;  // segments per ring, for "ringMarkers"
+  // Markers and regions, with the line of each key for the counts' messages.
+  struct Markers {
+    std::vector<int32_t> values;
+    size_t line = 0;
+    bool given = false;
+  } vertexMarkers, segmentMarkers, ringMarkers;
+  size_t regionsLine = 0;
+  bool hasRegions = false;
+  std::vector<Region> regions;
   uint64_t numPoints = 0, numConstraints = 0;
   std::string uid;
 };
@@ -117,14 +127,55 @@ bool readRing(JsonReader& r, JsonDoc& d) {
     d.ringSegments.push_back(static_cast<uint32_t>(base + i));
     d.ringSegments.push_back(static_cast<uint32_t>(base + (i + 1) % n));
   }
+  d.ringSizes.push_back(static_cast<uint32_t>(n));
   return true;
+}
+
+// A region [x, y, attribute] or [x, y, attribute, maxArea].
+bool readRegion(JsonReader& r, std::vector<Region>& dst) {
+  Region g;
+  if (!r.expect('[', "'[' starting a region [x, y, attribute, maxArea?]") ||
+      !r.number(g.x, "a region's x coordinate") || !r.expect(',', "',' after the region's x") ||
+      !r.number(g.y, "a region's y coordinate") || !r.expect(',', "',' after the region's y") ||
+      !r.number(g.attribute, "a region's attribute"))
+    return false;
+  r.ws();
+  if (r.peek() == ',') {
+    r.advance();
+    r.ws();
+    if (r.peek() == '-') return r.fail("a region's maximum area (a number >= 0; 0: none)");
+    if (!r.number(g.maxArea, "a region's maximum area")) return false;
+  }
+  if (!r.expect(']', "']' ending a region [x, y, attribute, maxArea?] (3 or 4 numbers)"))
+    return false;
+  dst.push_back(g);
+  return true;
+}
+
+// An array of 32-bit integers (markers).
+bool readMarkers(JsonReader& r, const char* what, std::vector<int32_t>& dst) {
+  return r.array(what, [&] {
+    int32_t m;
+    if (!r.int32(m, "a marker (an integer of 32 bits)")) return false;
+    dst.push_back(m);
+    return true;
+  });
+}
+
+// A marker array's length, when given: `count` items, one marker each.
+bool checkMarkerCount(const JsonDoc::Markers& markers, size_t count, const char* key,
+                      const char* item, Ctx& c) {
+  if (!markers.given || markers.values.size() == count) return true;
+  return c.fail(markers.line, "expected " + std::to_string(count) + (count == 1 ? " marker" : " markers") +
+                          " in \"" + key + "\" (one per " +
+                          item + "), found " + std::to_string(markers.values.size()));
 }
 
 JsonKind keyKind(const std::string& key) {
   if (key == "vertices" || key == "segments" || key == "holes" || key == "triangles" ||
-      key == "exactPoints")
+      key == "exactPoints" || key == "vertexMarkers" || key == "segmentMarkers")
     return JsonKind::Pslg;
-  if (key == "rings") return JsonKind::Rings;
+  if (key == "rings" || key == "ringMarkers") return JsonKind::Rings;
   if (key == "instance_uid" || key == "num_points" || key == "points_x" || key == "points_y" ||
       key == "region_boundary" || key == "num_constraints" || key == "additional_constraints")
     return JsonKind::Cgshop;
@@ -133,6 +184,12 @@ JsonKind keyKind(const std::string& key) {
 
 bool readMember(JsonReader& r, JsonDoc& d, const std::string& key, size_t keyLine) {
   Ctx& c = r.ctx();
+  // Regions go with a PSLG and with rings alike (buildCgshop refuses them).
+  if (key == "regions") {
+    d.hasRegions = true;
+    d.regionsLine = keyLine;
+    return r.array("the \"regions\" array", [&] { return readRegion(r, d.regions); });
+  }
   const JsonKind k = keyKind(key);
   if (k == JsonKind::None) {
     c.warn(keyLine, "ignored the unknown key \"" + printable(key) + "\"");
@@ -155,6 +212,15 @@ bool readMember(JsonReader& r, JsonDoc& d, const std::string& key, size_t keyLin
     return r.array("the \"segments\" array", [&] { return readPair(r, d.segments, "a segment"); });
   if (key == "holes")
     return r.array("the \"holes\" array", [&] { return readPoint(r, d.holes, "a hole"); });
+  if (key == "vertexMarkers" || key == "segmentMarkers" || key == "ringMarkers") {
+    JsonDoc::Markers& m = key == "vertexMarkers"    ? d.vertexMarkers
+                          : key == "segmentMarkers" ? d.segmentMarkers
+                                                    : d.ringMarkers;
+    m.given = true;
+    m.line = keyLine;
+    const std::string what = "the \"" + key + "\" array";
+    return readMarkers(r, what.c_str(), m.values);
+  }
   if (key == "rings") {
     d.hasRings = true;
     return r.array("the \"rings\" array", [&] { return readRing(r, d); });
@@ -199,6 +265,9 @@ bool readMember(JsonReader& r, JsonDoc& d, const std::string& key, size_t keyLin
 // A CG:SHOP 2025 instance: the region boundary (a ring of indices) becomes segments, then
 // the additional constraints.
 bool buildCgshop(JsonDoc& d, Ctx& c, Input& in) {
+  if (d.hasRegions)
+    return c.fail(d.regionsLine, "expected the keys of a CG:SHOP instance as \"" + d.kindKey +
+                                     "\" says, found \"regions\"");
   if (!d.hasPx || !d.hasPy || !d.hasBoundary) {
     const char* missing = !d.hasPx ? "points_x" : !d.hasPy ? "points_y" : "region_boundary";
     return c.fail(d.objectLine, std::string("expected the key \"") + missing +
@@ -263,17 +332,32 @@ bool buildInput(JsonDoc& d, Ctx& c, Input& in) {
         return c.fail(d.objectLine, "expected at most " + std::to_string(kMaxIndexCount) +
                                         " vertices, found " + std::to_string(n));
       if (!checkIndices(d.segments, n, "\"segments\"", c)) return false;
+      if (!checkMarkerCount(d.vertexMarkers, n, "vertexMarkers", "vertex", c) ||
+          !checkMarkerCount(d.segmentMarkers, d.segments.size() / 2, "segmentMarkers", "segment",
+                            c))
+        return false;
       in.format = InputFormat::JsonPslg;
       in.pslg.points = std::move(d.points);
       in.pslg.holes = std::move(d.holes);
       in.pslg.segments.assign(d.segments.values.begin(), d.segments.values.end());
+      in.pslg.vertexMarkers = std::move(d.vertexMarkers.values);
+      in.pslg.segmentMarkers = std::move(d.segmentMarkers.values);
+      in.pslg.regions = std::move(d.regions);
       return true;
     }
     case JsonKind::Rings:
+      if (!checkMarkerCount(d.ringMarkers, d.ringSizes.size(), "ringMarkers", "ring", c))
+        return false;
       in.format = InputFormat::JsonPslg;
       in.hasRings = true;
       in.pslg.points = std::move(d.points);
       in.pslg.segments = std::move(d.ringSegments);
+      // Each ring's segments take its marker.
+      if (d.ringMarkers.given)
+        for (size_t i = 0; i < d.ringSizes.size(); ++i)
+          in.pslg.segmentMarkers.insert(in.pslg.segmentMarkers.end(), d.ringSizes[i],
+                                        d.ringMarkers.values[i]);
+      in.pslg.regions = std::move(d.regions);
       return true;
     case JsonKind::Cgshop:
       return buildCgshop(d, c, in);

@@ -3,6 +3,8 @@
 // cannot hold is an error before anything is allocated for it.
 #include "triangle_format.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "numbers.h"
@@ -47,9 +49,10 @@ struct Lines {
   size_t remaining() const { return text.size() - pos; }
 
   // The common vertex line "<id> <x> <y> [marker]" (no attributes, no comment; the marker
-  // only when `marker`) parsed in one pass. Returns false, consuming nothing, for anything
-  // else: the caller then reads the line with next() and the general, checking code.
-  bool fastVertexLine(bool marker, int64_t& id, double& x, double& y) {
+  // only when `marker`, 0 when left out) parsed in one pass. Returns false, consuming nothing,
+  // for anything else: the caller then reads the line with next() and the general, checking
+  // code.
+  bool fastVertexLine(bool marker, int64_t& id, double& x, double& y, int32_t& mark) {
     const char* const base = text.data();
     const char* const e = base + text.size();
     const char* p = base + pos;
@@ -71,12 +74,16 @@ struct Lines {
     if (parseDecimalPrefix(p, e, stop, y) != NumErr::Ok) return false;
     p = stop;
     while (p < e && (*p == ' ' || *p == '\t')) ++p;
+    int64_t m = 0;
     if (marker && p < e && (isDigit(*p) || *p == '-')) {
-      const char* m = p;
-      if (*p == '-') ++p;
-      while (p < e && isDigit(*p) && p - m < 18) ++p;
-      if (p == m + (*m == '-') || (p < e && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n'))
+      const char* const from = p;
+      const bool negative = *p == '-';
+      if (negative) ++p;
+      while (p < e && isDigit(*p) && p - from < 11) m = m * 10 + (*p++ - '0');
+      if (p == from + negative || (p < e && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n'))
         return false;
+      if (negative) m = -m;
+      if (m < INT32_MIN || m > INT32_MAX) return false;  // (the checking code says why)
       while (p < e && (*p == ' ' || *p == '\t')) ++p;
     }
     if (p < e && *p == '\r') ++p;
@@ -85,6 +92,7 @@ struct Lines {
       ++p;
     }
     id = static_cast<int64_t>(v);
+    mark = static_cast<int32_t>(m);
     pos = static_cast<size_t>(p - base);
     lineNo = nextLineNo++;
     return true;
@@ -212,12 +220,15 @@ inline bool readId(Fields& f, Ctx& c, size_t line, const char* what, int64_t& id
                 std::string("expected ") + what + " number (an integer), found " + quote(f.peek()));
 }
 
-// Optional trailing fields: up to `attrs` numbers then up to `markers` integers.
+// Optional trailing fields: up to `attrs` numbers (ignored: acutemesh has no vertex
+// attributes) then up to `markers` (0 or 1) integers, the marker. Triangle lets attributes and
+// markers default to 0.
 bool readExtras(Fields& f, Ctx& c, size_t line, uint64_t attrs, uint64_t markers,
-                const std::string& layout) {
+                const std::string& layout, int32_t& marker) {
+  marker = 0;
   std::string_view tok;
   for (uint64_t i = 0; i < attrs + markers; ++i) {
-    if (!f.next(tok)) return true;  // Triangle lets attributes and markers default to 0
+    if (!f.next(tok)) return true;
     if (i < attrs) {
       double d;
       NumErr e = parseFieldDouble(tok, d);
@@ -226,8 +237,9 @@ bool readExtras(Fields& f, Ctx& c, size_t line, uint64_t attrs, uint64_t markers
                                 quote(tok));
     } else {
       int64_t m;
-      if (!parseFieldInt(tok, m))
-        return c.fail(line, "expected a boundary marker (an integer), found " + quote(tok));
+      if (!parseFieldInt(tok, m) || m < INT32_MIN || m > INT32_MAX)
+        return c.fail(line, "expected a boundary marker (a 32-bit integer), found " + quote(tok));
+      marker = static_cast<int32_t>(m);
     }
   }
   return noMoreFields(f, c, line, layout);
@@ -272,21 +284,24 @@ bool readNodeHeader(Lines& L, Ctx& c, NodeHeader& h) {
   return true;
 }
 
-// The vertex lines after a header, appended to `pts` (the caller's vector is empty).
+// The vertex lines after a header, appended to `pts` and, when the header announces them,
+// their markers to `markers` (the caller's vectors are empty).
 bool readVertexLines(Lines& L, Ctx& c, const NodeHeader& h, std::vector<double>& pts,
-                     VertexList& vl) {
+                     std::vector<int32_t>& markers, VertexList& vl) {
   const uint64_t room = maxItems(L.remaining(), 5);  // "0 0 0"
   if (h.count > room)
     return c.fail(h.line, "expected a vertex count the rest of the text can hold (at most " +
                               std::to_string(room) + "), found " + std::to_string(h.count));
   pts.reserve(static_cast<size_t>(h.count) * 2);
+  if (h.markers) markers.reserve(static_cast<size_t>(h.count));
   const std::string layout = vertexLayout(h.attrs, h.markers);
   bool warnedIds = false;
   std::string_view line;
   for (uint64_t i = 0; i < h.count; ++i) {
     int64_t id;
     double x, y;
-    const bool fast = L.fastVertexLine(h.attrs == 0 && h.markers == 1, id, x, y);
+    int32_t marker = 0;
+    const bool fast = L.fastVertexLine(h.attrs == 0 && h.markers == 1, id, x, y, marker);
     if (!fast && !L.next(line))
       return c.fail(L.eofLine(), "expected vertex line " + std::to_string(i + 1) + " of " +
                                      std::to_string(h.count) + " " + layout +
@@ -309,10 +324,11 @@ bool readVertexLines(Lines& L, Ctx& c, const NodeHeader& h, std::vector<double>&
     }
     if (!fast &&
         (!readCoord(f, c, ln, "x coordinate", x) || !readCoord(f, c, ln, "y coordinate", y) ||
-         !readExtras(f, c, ln, h.attrs, h.markers, layout)))
+         !readExtras(f, c, ln, h.attrs, h.markers, layout, marker)))
       return false;
     pts.push_back(x);
     pts.push_back(y);
+    if (h.markers) markers.push_back(marker);
   }
   vl.count = static_cast<size_t>(h.count);
   return true;
@@ -323,11 +339,11 @@ void warnTrailing(Lines& L, Ctx& c, const char* after) {
   if (L.next(line)) c.warn(L.lineNo, std::string("ignored the text after ") + after);
 }
 
-bool parseNodeInto(std::string_view text, Ctx& c, std::vector<double>& pts, VertexList& vl,
-                   bool warnTrail) {
+bool parseNodeInto(std::string_view text, Ctx& c, std::vector<double>& pts,
+                   std::vector<int32_t>& markers, VertexList& vl, bool warnTrail) {
   Lines L(text);
   NodeHeader h;
-  if (!readNodeHeader(L, c, h) || !readVertexLines(L, c, h, pts, vl)) return false;
+  if (!readNodeHeader(L, c, h) || !readVertexLines(L, c, h, pts, markers, vl)) return false;
   if (warnTrail) warnTrailing(L, c, "the vertices");
   return true;
 }
@@ -379,20 +395,22 @@ bool readPolyVertices(Lines& L, Ctx& c, Input& in, std::string_view nodeText,
                       const std::string& nodeName, VertexList& vl) {
   NodeHeader h;
   if (!readNodeHeader(L, c, h)) return false;
-  if (h.count != 0) return readVertexLines(L, c, h, in.pslg.points, vl);
+  if (h.count != 0) return readVertexLines(L, c, h, in.pslg.points, in.pslg.vertexMarkers, vl);
   if (nodeText.empty() && nodeName.empty())
     return c.fail(h.line,
                   "expected vertices (a count of 0 says they are in a .node file), found "
                   "no .node text");
   Ctx nc{nodeName, c.warnings, {}};
-  if (!parseNodeInto(nodeText, nc, in.pslg.points, vl, true)) {
+  if (!parseNodeInto(nodeText, nc, in.pslg.points, in.pslg.vertexMarkers, vl, true)) {
     c.message = nc.message;
     return false;
   }
   return true;
 }
 
-bool readSegments(Lines& L, Ctx& c, const VertexList& vl, std::vector<uint32_t>& segments) {
+// The segments, and their markers when the header announces them.
+bool readSegments(Lines& L, Ctx& c, const VertexList& vl, std::vector<uint32_t>& segments,
+                  std::vector<int32_t>& segmentMarkers) {
   bool present;
   size_t line = 0;
   Fields f{std::string_view()};
@@ -406,6 +424,7 @@ bool readSegments(Lines& L, Ctx& c, const VertexList& vl, std::vector<uint32_t>&
   const std::string segLayout =
       markers ? "'<id> <endpoint> <endpoint> [marker]'" : "'<id> <endpoint> <endpoint>'";
   segments.reserve(static_cast<size_t>(count) * 2);
+  if (markers) segmentMarkers.reserve(static_cast<size_t>(count));
   std::string_view content;
   for (uint64_t i = 0; i < count; ++i) {
     if (!L.next(content))
@@ -416,11 +435,13 @@ bool readSegments(Lines& L, Ctx& c, const VertexList& vl, std::vector<uint32_t>&
     Fields g(content);
     int64_t id;
     uint32_t a, b;
+    int32_t marker;
     if (!readId(g, c, ln, "a segment", id) || !readEndpoint(g, c, ln, vl, a) ||
-        !readEndpoint(g, c, ln, vl, b) || !readExtras(g, c, ln, 0, markers, segLayout))
+        !readEndpoint(g, c, ln, vl, b) || !readExtras(g, c, ln, 0, markers, segLayout, marker))
       return false;
     segments.push_back(a);
     segments.push_back(b);
+    if (markers) segmentMarkers.push_back(marker);
   }
   return true;
 }
@@ -455,8 +476,9 @@ bool readHoles(Lines& L, Ctx& c, std::vector<double>& holes, bool& present) {
   return true;
 }
 
-// Optional regional attributes and area constraints: checked for form, then ignored.
-bool readRegions(Lines& L, Ctx& c) {
+// Optional regional attributes and area constraints (a negative or missing area: none, as in
+// Triangle).
+bool readRegions(Lines& L, Ctx& c, std::vector<Region>& regions) {
   bool present;
   size_t line = 0;
   Fields f{std::string_view()};
@@ -477,12 +499,16 @@ bool readRegions(Lines& L, Ctx& c) {
     const size_t ln = L.lineNo;
     Fields g(content);
     int64_t id;
-    double x, y, attr;
-    if (!readId(g, c, ln, "a region", id) || !readCoord(g, c, ln, "region x coordinate", x) ||
-        !readCoord(g, c, ln, "region y coordinate", y) ||
-        !readCoord(g, c, ln, "regional attribute", attr) ||
-        !readExtras(g, c, ln, 1, 0, regionLayout))
+    Region region;
+    if (!readId(g, c, ln, "a region", id) ||
+        !readCoord(g, c, ln, "region x coordinate", region.x) ||
+        !readCoord(g, c, ln, "region y coordinate", region.y) ||
+        !readCoord(g, c, ln, "regional attribute", region.attribute))
       return false;
+    if (g.more() && !readCoord(g, c, ln, "maximum area", region.maxArea)) return false;
+    if (!noMoreFields(g, c, ln, regionLayout)) return false;
+    region.maxArea = std::max(region.maxArea, 0.0);
+    regions.push_back(region);
   }
   warnTrailing(L, c, "the regional attributes");
   return true;
@@ -494,9 +520,10 @@ bool parsePolyImpl(std::string_view text, Ctx& c, Input& in, std::string_view no
   VertexList vl;
   bool holesPresent;
   if (!readPolyVertices(L, c, in, nodeText, nodeName, vl) ||
-      !readSegments(L, c, vl, in.pslg.segments) || !readHoles(L, c, in.pslg.holes, holesPresent))
+      !readSegments(L, c, vl, in.pslg.segments, in.pslg.segmentMarkers) ||
+      !readHoles(L, c, in.pslg.holes, holesPresent))
     return false;
-  return !holesPresent || readRegions(L, c);
+  return !holesPresent || readRegions(L, c, in.pslg.regions);
 }
 
 }  // namespace
@@ -531,7 +558,8 @@ ParseResult parseNode(std::string_view text, const std::string& name, Input& out
   Input in;
   Ctx c{name, &in.warnings, {}};
   io::VertexList vl;
-  if (!io::parseNodeInto(text, c, in.pslg.points, vl, true)) return failure(std::move(c.message));
+  if (!io::parseNodeInto(text, c, in.pslg.points, in.pslg.vertexMarkers, vl, true))
+    return failure(std::move(c.message));
   in.format = InputFormat::Node;
   out = std::move(in);
   return {};
