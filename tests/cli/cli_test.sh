@@ -352,7 +352,7 @@ check "min angle alone: quality mode" stdout_has '"mode": "quality"'
 check "max area alone means quality" run 0 --max-area 0.5 --stats --no-output "$work/A.poly"
 check "max area alone: quality mode" stdout_has '"mode": "quality"'
 check "min angle with cdt" run 2 --mode cdt --min-angle 30 "$work/A.poly"
-check "min angle with cdt says" stderr_has "--min-angle / --max-area has no effect with --mode cdt"
+check "min angle with cdt says" stderr_has "--min-angle / --max-area / --max-edge / --size has no effect with --mode cdt"
 check "max angle with delaunay" run 2 --mode delaunay --max-angle 80 "$work/A.poly"
 check "max angle with delaunay says" stderr_has "--max-angle has no effect with --mode delaunay"
 check "max angle with quality" run 2 --mode quality --max-angle 80 "$work/A.poly"
