@@ -10,6 +10,7 @@
 #include <malloc.h>
 
 #include <atomic>
+#include <functional>
 #include <cstdlib>
 #include <new>
 #include <string>
@@ -121,6 +122,32 @@ Mesh meshFromJs(const val& m) {
   return mesh;
 }
 
+// A JS function of (x, y) as the core's size function: called on this thread (the wasm build
+// runs one). The facade's wrapper catches what the caller's function throws and returns NaN,
+// which the core reports as a bad size.
+std::function<double(double, double)> functionFromJs(const val& f) {
+  if (f.typeOf().as<std::string>() != "function") return {};
+  return [f](double x, double y) { return f(x, y).as<double>(); };
+}
+
+// options.size as the facade normalised it: {function, grid: {x0, y0, dx, dy, nx, ny, h},
+// points, sizes, maxArea}, each optional.
+SizeField sizeFromJs(const val& s) {
+  SizeField size;
+  size.function = functionFromJs(s["function"]);
+  size.maxArea = functionFromJs(s["maxArea"]);
+  const val g = s["grid"];
+  if (!g.isUndefined()) {
+    size.grid.x0 = g["x0"].as<double>(), size.grid.y0 = g["y0"].as<double>();
+    size.grid.dx = g["dx"].as<double>(), size.grid.dy = g["dy"].as<double>();
+    size.grid.nx = g["nx"].as<uint32_t>(), size.grid.ny = g["ny"].as<uint32_t>();
+    size.grid.h = fromJs<double>(g["h"]);
+  }
+  size.points = fromJs<double>(s["points"]);
+  size.sizes = fromJs<double>(s["sizes"]);
+  return size;
+}
+
 // Options from the facade's checked object: mode and fill arrive as names it has checked.
 Options optionsFromJs(const val& o) {
   Options opt;
@@ -136,6 +163,9 @@ Options optionsFromJs(const val& o) {
   opt.maxSteiner = o["maxSteiner"].as<uint32_t>();
   opt.timeLimit = o["timeLimit"].as<double>();
   opt.adjacency = !o["adjacency"].isUndefined() && o["adjacency"].as<bool>();
+  if (!o["maxEdge"].isUndefined()) opt.maxEdge = o["maxEdge"].as<double>();
+  if (!o["grading"].isUndefined()) opt.grading = o["grading"].as<double>();
+  if (!o["size"].isUndefined()) opt.size = sizeFromJs(o["size"]);
   return opt;
 }
 
@@ -159,6 +189,7 @@ val statsToJs(const Stats& s) {
   o.set("smallestDomainAngle", s.smallestDomainAngle);
   o.set("angleFloor", s.angleFloor);
   o.set("angleBound", s.angleBound);
+  o.set("sizeRatio", s.sizeRatio);
   val phases = val::object();
   for (const PhaseTime& p : s.phases) phases.set(p.phase, p.seconds);
   o.set("phases", phases);
@@ -318,6 +349,8 @@ val defaultsToJs() {
   o.set("maxAngle", d.maxAngle);
   o.set("minAngle", d.minAngle);
   o.set("maxArea", d.maxArea);
+  o.set("maxEdge", d.maxEdge);
+  o.set("grading", d.grading);
   o.set("maxSteiner", d.maxSteiner);
   o.set("timeLimit", d.timeLimit);
   o.set("adjacency", d.adjacency);

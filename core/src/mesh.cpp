@@ -669,6 +669,10 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
     stats.warnings.push_back(std::string("minAngle, maxAngle, maxArea and sizes have no effect in mode ") +
                              nameOf(options.mode) +
                              ", which does not refine (modes quality, nonobtuse, acute do)");
+  if (refining && options.grading > 0 && !(options.maxEdge > 0) && !options.size.function &&
+      options.size.grid.h.empty() && options.size.sizes.empty())
+    stats.warnings.push_back("grading has no effect without maxEdge or a size: it limits how fast "
+                             "those grow");
   if (belowFloor) target.maxAngle = kAutoMaxAngle;
   const bool inParts = refining && byParts &&
                        detail::meshByParts(T, inside, input, inputOf, target, budget, result);
@@ -789,6 +793,23 @@ Result meshScaled(const Pslg& input, const Options& options) {
   return r;
 }
 
+// A size or area function's bad value (SizeFunctionGuard) makes the whole run BadInput.
+Result meshGuarded(const Pslg& input, const Options& options) {
+  if (!options.size.function && !options.size.maxArea) return meshScaled(input, options);
+  Options guarded = options;
+  const detail::SizeFunctionGuard guard(guarded);
+  Result r = meshScaled(input, guarded);
+  const std::string bad = guard.message();
+  if (bad.empty() || r.status == Status::BadInput) return r;
+  Result failed;
+  failed.status = Status::BadInput;
+  failed.message = bad;
+  failed.stats.inputVertices = r.stats.inputVertices;
+  failed.stats.inputSegments = r.stats.inputSegments;
+  failed.stats.inputHoles = r.stats.inputHoles;
+  return failed;
+}
+
 }  // namespace
 
 // Nothing throws, as promised in acutemesh.h: memory running out (an area bound or a Steiner
@@ -797,7 +818,7 @@ Result meshScaled(const Pslg& input, const Options& options) {
 Result mesh(const Pslg& input, const Options& options) {
 #if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
   try {
-    return meshScaled(input, options);
+    return meshGuarded(input, options);
   } catch (const std::bad_alloc&) {
   } catch (const std::length_error&) {
   }
@@ -810,7 +831,7 @@ Result mesh(const Pslg& input, const Options& options) {
   r.stats.inputHoles = uint32_t(input.holes.size() / 2);
   return r;
 #else
-  return meshScaled(input, options);
+  return meshGuarded(input, options);
 #endif
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
+#include <atomic>
 
 #include "acutemesh/predicates.h"
 #include "build.h"
@@ -180,21 +182,32 @@ class RegionAreas {
         }
       }
     }
-    // A start near each cell of a coarse grid: the walk from there is short.
+    // A grid of cells over the box: a cell that only domain triangles of one bound overlap
+    // answers at once (most of them); the others keep a start near them for the walk.
     double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf};
     for (size_t i = 0; i < pts_.size(); ++i)
       lo[i % 2] = std::min(lo[i % 2], pts_[i]), hi[i % 2] = std::max(hi[i % 2], pts_[i]);
-    side_ = uint32_t(std::clamp(std::sqrt(double(slots) / 4), 1.0, 1024.0));
+    side_ = uint32_t(std::clamp(2 * std::sqrt(double(slots)), 1.0, 1024.0));
     x0_ = lo[0], y0_ = lo[1];
     cw_ = std::max(hi[0] - lo[0], 1e-300) / side_, ch_ = std::max(hi[1] - lo[1], 1e-300) / side_;
-    start_.assign(size_t(side_) * side_, kNone);
+    const size_t cells = size_t(side_) * side_;
+    start_.assign(cells, kNone);
+    cellBound_.assign(cells, kUnset);
     for (uint32_t t = 0; t < slots; ++t) {
       if (t >= inside.size() || !inside[t]) continue;
       const uint32_t* v = &tri_[3 * t];
-      const double cx = (pts_[2 * v[0]] + pts_[2 * v[1]] + pts_[2 * v[2]]) / 3;
-      const double cy = (pts_[2 * v[0] + 1] + pts_[2 * v[1] + 1] + pts_[2 * v[2] + 1]) / 3;
-      uint32_t& s = start_[cellOf(cx, cy)];
-      if (s == kNone) s = t;
+      double tlo[2] = {kInf, kInf}, thi[2] = {-kInf, -kInf};
+      for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 2; ++d)
+          tlo[d] = std::min(tlo[d], pts_[2 * v[k] + d]), thi[d] = std::max(thi[d], pts_[2 * v[k] + d]);
+      const size_t first = cellOf(tlo[0], tlo[1]), last = cellOf(thi[0], thi[1]);
+      for (size_t j = first / side_; j <= last / side_; ++j)
+        for (size_t i = first % side_; i <= last % side_; ++i) {
+          const size_t c = i + side_ * j;
+          if (start_[c] == kNone) start_[c] = t;
+          double& b = cellBound_[c];
+          b = b == kUnset || b == bound_[t] ? bound_[t] : kMixed;
+        }
     }
     for (uint32_t& s : start_)
       if (s == kNone) s = anyInside(inside);
@@ -202,8 +215,10 @@ class RegionAreas {
 
   // The area bound at p (0: none).
   double at(double x, double y) const {
+    const size_t cell = cellOf(x, y);
+    if (cellBound_[cell] >= 0) return cellBound_[cell];
     const double p[2] = {x, y};
-    uint32_t t = start_[cellOf(x, y)];
+    uint32_t t = start_[cell];
     uint32_t entered = kNone;
     uint64_t rng = 0x9E3779B97F4A7C15ull ^ uint64_t(t);
     for (size_t step = 0; step < tri_.size(); ++step) {
@@ -242,7 +257,9 @@ class RegionAreas {
 
   std::vector<double> pts_;
   std::vector<uint32_t> tri_, opp_;
+  static constexpr double kUnset = -1, kMixed = -2;  // cellBound_ but a bound
   std::vector<double> bound_;
+  std::vector<double> cellBound_;
   std::vector<uint32_t> start_;
   uint32_t side_ = 1;
   double x0_ = 0, y0_ = 0, cw_ = 1, ch_ = 1;
@@ -265,7 +282,7 @@ std::string checkSizes(const Options& o) {
       return "size grid: x0, y0 must be finite and dx, dy finite and > 0";
     for (size_t i = 0; i < g.h.size(); ++i)
       if (!positive(g.h[i]))
-        return "size grid: h[" + std::to_string(i) + "] must be > 0, found " + std::to_string(g.h[i]);
+        return "size grid: h[" + std::to_string(i) + "] must be > 0, found " + shortestText(g.h[i]);
   }
   const SizeField& s = o.size;
   if (s.points.size() != 2 * s.sizes.size())
@@ -275,10 +292,43 @@ std::string checkSizes(const Options& o) {
     if (!std::isfinite(s.points[2 * i]) || !std::isfinite(s.points[2 * i + 1]))
       return "size point " + std::to_string(i) + " must have finite coordinates";
     if (!positive(s.sizes[i]))
-      return "size point " + std::to_string(i) + ": its size must be > 0, found " +
-             std::to_string(s.sizes[i]);
+      return "size point " + std::to_string(i) + ": its size must be > 0, found " + shortestText(s.sizes[i]);
   }
   return {};
+}
+
+struct SizeFunctionGuard::Seen {
+  std::atomic<bool> any{false};
+  std::mutex mutex;
+  std::string message;
+
+  double check(const char* what, double x, double y, double value) {
+    if (value > 0) return value;
+    if (!any.exchange(true)) {
+      std::lock_guard<std::mutex> lock(mutex);
+      message = std::string("size: ") + what + " returned " + shortestText(value) + " at (" +
+                shortestText(x) + ", " + shortestText(y) + "); " + what +
+                " values must be > 0 (+infinity: no bound there)";
+    }
+    return kInf;
+  }
+};
+
+SizeFunctionGuard::SizeFunctionGuard(Options& o) : seen_(std::make_shared<Seen>()) {
+  if (o.size.function)
+    o.size.function = [f = o.size.function, seen = seen_](double x, double y) {
+      return seen->check("the size function", x, y, f(x, y));
+    };
+  if (o.size.maxArea)
+    o.size.maxArea = [f = o.size.maxArea, seen = seen_](double x, double y) {
+      return seen->check("the maxArea function", x, y, f(x, y));
+    };
+}
+
+std::string SizeFunctionGuard::message() const {
+  if (!seen_->any) return {};
+  std::lock_guard<std::mutex> lock(seen_->mutex);
+  return seen_->message;
 }
 
 void scaleSizes(Options& o, int exponent) {

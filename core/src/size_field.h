@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,19 @@ class Triangulation;
 // An option out of range, or empty: maxEdge, grading, a grid's shape and values, scattered
 // sizes' arrays.
 std::string checkSizes(const Options& options);
+
+// Watches the caller's size and area functions: the first value that is not > 0 (NaN, 0,
+// negative) is kept with its place, and counts as no bound there. mesh() reports it as
+// BadInput after the run (message() empty: none seen). Safe across refinement's threads.
+class SizeFunctionGuard {
+ public:
+  explicit SizeFunctionGuard(Options& options);  // wraps options.size.function and .maxArea
+  std::string message() const;
+
+ private:
+  struct Seen;
+  std::shared_ptr<Seen> seen_;
+};
 
 // The sizes for an input scaled by 2^-exponent (meshScaled): lengths and grid places scaled,
 // areas by the square, the functions called at the caller's coordinates.

@@ -55,6 +55,15 @@ function toCoordinates(value, what) {
     }
     return out;
   }
+  return toNumbers(value, what);
+}
+
+// Numbers (a typed array or an array of numbers) as a Float64Array.
+function toNumbers(value, what) {
+  if (value instanceof Float64Array) return value;
+  if (ArrayBuffer.isView(value) && !(value instanceof DataView)) return Float64Array.from(value);
+  if (!Array.isArray(value))
+    throw new TypeError(`${what} must be a Float64Array or an array of numbers, not ${describe(value)}`);
   for (let i = 0; i < value.length; ++i)
     if (typeof value[i] !== 'number')
       throw new TypeError(`${what}[${i}] must be a number, not ${describe(value[i])}`);
@@ -275,6 +284,71 @@ function maxAngleOption(options, fallback) {
   return v;
 }
 
+const SIZE_KEYS = ['function', 'grid', 'points', 'sizes', 'maxArea'];
+const GRID_KEYS = ['x0', 'y0', 'dx', 'dy', 'nx', 'ny', 'h'];
+
+// options.size: a function (x, y) => size, or { function, grid, points, sizes, maxArea } with
+// any of them (SizeField in acutemesh.h). Checked for shape here; the core checks the values
+// (sizes > 0, h holding nx * ny of them, one size per point) and names the one that is wrong.
+function sizeOption(size) {
+  if (size === undefined) return undefined;
+  if (typeof size === 'function') return { function: size };
+  checkObject(size, 'options.size');
+  checkKeys(size, SIZE_KEYS, 'options.size');
+  const out = {};
+  for (const key of ['function', 'maxArea']) {
+    if (size[key] === undefined) continue;
+    if (typeof size[key] !== 'function')
+      throw new TypeError(`options.size.${key} must be a function (x, y) => number, not ${describe(size[key])}`);
+    out[key] = size[key];
+  }
+  if (size.grid !== undefined) {
+    const g = size.grid;
+    checkObject(g, 'options.size.grid');
+    checkKeys(g, GRID_KEYS, 'options.size.grid');
+    out.grid = {};
+    for (const key of GRID_KEYS.slice(0, 6)) {
+      if (typeof g[key] !== 'number')
+        throw new TypeError(`options.size.grid.${key} must be a number, not ${describe(g[key])}`);
+      if ((key === 'nx' || key === 'ny') && !(Number.isInteger(g[key]) && g[key] >= 1 && g[key] <= 0xffffffff))
+        throw badInput(`options.size.grid.${key} must be a whole number of nodes >= 1, not ${g[key]}`);
+      out.grid[key] = g[key];
+    }
+    out.grid.h = toNumbers(g.h, 'options.size.grid.h');
+  }
+  if (size.points !== undefined) out.points = toCoordinates(size.points, 'options.size.points');
+  if (size.sizes !== undefined) out.sizes = toNumbers(size.sizes, 'options.size.sizes');
+  return out;
+}
+
+// The size and area functions as the module calls them: what the caller's function throws, or
+// a value that is not a number, stops the run (the progress callback's answer) and is thrown
+// from mesh(); a number out of range the core reports itself.
+function sizeBridge(size) {
+  let error;
+  const wrap = (f, key) => (x, y) => {
+    if (error !== undefined) return NaN;
+    try {
+      const h = f(x, y);
+      if (typeof h === 'number') return h;
+      error = new TypeError(`options.size.${key} must return a number, not ${describe(h)} (at ${x}, ${y})`);
+    } catch (e) {
+      error = e;
+    }
+    return NaN;
+  };
+  if (size === undefined || (size.function === undefined && size.maxArea === undefined))
+    return { size, failed: undefined, rethrow() {} };
+  const wrapped = { ...size };
+  for (const key of ['function', 'maxArea'])
+    if (size[key] !== undefined) wrapped[key] = wrap(size[key], key);
+  return {
+    size: wrapped,
+    failed: () => error !== undefined,
+    rethrow() { if (error !== undefined) throw error; },
+  };
+}
+
 // The options that describe the job, as names (what a mesh result carries, and what
 // validate() reads back); functions and signals are handled by mesh() itself. `core` holds the
 // names' checks and the defaults (makeApi); `input` is toPslg's result.
@@ -303,9 +377,12 @@ function toOptions(options, input, core, where) {
     exactFeet: flag('exactFeet'),
     adjacency: flag('adjacency'),
     maxAngle: maxAngleOption(options, defaults.maxAngle),
-    // The core checks the ranges of these two and names the option when one is wrong.
+    // The core checks the ranges of these and names the option when one is wrong.
     minAngle: numberOption(options, 'minAngle', defaults.minAngle),
     maxArea: numberOption(options, 'maxArea', defaults.maxArea),
+    maxEdge: numberOption(options, 'maxEdge', defaults.maxEdge),
+    grading: numberOption(options, 'grading', defaults.grading),
+    size: sizeOption(options.size),
     maxSteiner,
     timeLimit,
   };
@@ -496,10 +573,10 @@ function makeCaller(factory, compiled, memoryLimit, M) {
 // The core calls progress back synchronously; a true return asks it to stop. An exception from
 // the user's callback is kept and rethrown (rethrow()) after the core has returned, so it never
 // unwinds through C++ frames.
-function progressBridge(onProgress, signal) {
+function progressBridge(onProgress, signal, sizeFailed) {
   let callbackError;
   let failed = false;
-  const callback = onProgress || signal ? (phase, fraction, vertices) => {
+  const callback = onProgress || signal || sizeFailed ? (phase, fraction, vertices) => {
     if (onProgress && !failed) {
       try {
         onProgress({ phase, fraction, vertices });
@@ -508,7 +585,7 @@ function progressBridge(onProgress, signal) {
         failed = true;
       }
     }
-    return failed || (signal !== undefined && signal.aborted);
+    return failed || (sizeFailed !== undefined && sizeFailed()) || (signal !== undefined && signal.aborted);
   } : undefined;
   return { callback, rethrow() { if (failed) throw callbackError; } };
 }
@@ -618,10 +695,12 @@ function makeApi(factory, compiled, memoryLimit, M) {
         throw new TypeError(`options.onProgress must be a function, not ${describe(onProgress)}`);
       checkSignal(signal);
       if (signal && signal.aborted) throw abortError(signal);
-      const progress = progressBridge(onProgress, signal);
-      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, input.labels, opts,
-        progress.callback));
+      const sizes = sizeBridge(opts.size);
+      const progress = progressBridge(onProgress, signal, sizes.failed);
+      const r = call((I) => I.core_mesh(input.points, input.segments, input.holes, input.labels,
+        { ...opts, size: sizes.size }, progress.callback));
       progress.rethrow();
+      sizes.rethrow();
       if (r.status === 'cancelled') throw abortError(signal);
       if (r.status === 'bad-input') throw badInput(r.message);
       const result = {

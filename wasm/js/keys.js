@@ -5,8 +5,8 @@
 // The keys of mesh()'s options (validate() takes the same object); the resolved options a
 // mesh carries (MeshResult.options) are a subset.
 export const MESH_OPTION_KEYS = ['mode', 'fill', 'convexHull', 'exactSegments', 'exactFeet',
-  'maxAngle', 'minAngle', 'maxArea', 'maxSteiner', 'timeLimit', 'onProgress', 'signal',
-  'adjacency'];
+  'maxAngle', 'minAngle', 'maxArea', 'maxEdge', 'size', 'grading', 'maxSteiner', 'timeLimit',
+  'onProgress', 'signal', 'adjacency'];
 
 // init() and createInstance(); a worker's init options are these less locateFile.
 export const INIT_OPTION_KEYS = ['wasmUrl', 'locateFile', 'wasmBinary', 'wasmModule', 'maxMemory'];

@@ -111,6 +111,13 @@ class MeshWorker {
       return Promise.reject(e);
     }
     const { signal, onProgress, ...rest } = options;
+    const { size } = options;
+    if (typeof size === 'function' || (typeof size === 'object' && size !== null &&
+        (typeof size.function === 'function' || typeof size.maxArea === 'function'))) {
+      return Promise.reject(new TypeError('options.size: a function cannot be sent to a worker ' +
+        '(functions do not clone); give the sizes as a grid { x0, y0, dx, dy, nx, ny, h } or as ' +
+        'points and sizes, or call mesh() on this thread'));
+    }
     if (onProgress !== undefined && typeof onProgress !== 'function')
       return Promise.reject(new TypeError('options.onProgress must be a function'));
     if (signal !== undefined && (typeof signal !== 'object' || signal === null || typeof signal.aborted !== 'boolean'))

@@ -7,7 +7,7 @@ export type Mode =
   | 'delaunay'
   /** Constrained Delaunay triangulation of the PSLG, restricted to its domain (default). */
   | 'cdt'
-  /** Refine until every angle >= minAngle and every area <= maxArea (minAngle 20 when neither is given). */
+  /** Refine until every angle >= minAngle and every area <= maxArea (minAngle 20 when none of minAngle, maxArea and the sizes is given). */
   | 'quality'
   /** Refine until every angle <= 90 degrees (certified exactly). */
   | 'nonobtuse'
@@ -156,10 +156,24 @@ export interface MeshOptions {
    * stats.warnings and meshed as 'auto', status 'target-not-met'. Other modes ignore a number.
    */
   maxAngle?: number | 'auto';
-  /** Degrees; smallest angle wanted (quality mode: 20 when neither minAngle nor maxArea is given; 0 <= minAngle < 60; terminates up to 40, and above 40 a run that wanders is meshed to 40 instead, status 'target-not-met'). */
+  /** Degrees; smallest angle wanted (quality mode: 20 when none of minAngle, maxArea and the sizes is given; 0 <= minAngle < 60; terminates up to 40, and above 40 a run that wanders is meshed to 40 instead, status 'target-not-met'). */
   minAngle?: number;
   /** Largest triangle area wanted (0: none). */
   maxArea?: number;
+  /** Longest edge wanted (0: none), in every refinement mode; acute and non-obtuse meshes stay so. */
+  maxEdge?: number;
+  /**
+   * Edge sizes over the plane: a triangle is split while its longest edge exceeds the size at
+   * its centroid. A function (x, y) => size, or any of a function, a grid, scattered points
+   * with sizes and an area function; where several apply the smallest holds. Sizes > 0
+   * (Infinity: no bound there). Functions run on this thread (not through acutemesh/worker).
+   */
+  size?: SizeFunction | SizeField;
+  /**
+   * How fast sizes may grow with distance, |grad size| <= grading (0.2-0.5 is usual; 0: no
+   * limit). Grades maxEdge and size; the sizes the geometry forces grade by themselves.
+   */
+  grading?: number;
   /** Steiner point budget (0: automatic, 50 per input vertex and at least 20000). */
   maxSteiner?: number;
   /** Seconds (0: none). When it ends, the best mesh so far comes back with stats.targetMet false. */
@@ -179,6 +193,21 @@ export interface MeshOptions {
   signal?: AbortSignalLike;
 }
 
+/** A size at (x, y): the longest an edge may be there (> 0; Infinity: no bound). */
+export type SizeFunction = (x: number, y: number) => number;
+
+/** Sizes from several sources (SizeField in acutemesh.h); each optional. */
+export interface SizeField {
+  function?: SizeFunction;
+  /** h[i + nx * j] at (x0 + i * dx, y0 + j * dy), bilinear in between, the nearest border value outside. */
+  grid?: { x0: number; y0: number; dx: number; dy: number; nx: number; ny: number; h: ArrayLike<number> };
+  /** Scattered sizes: points (x, y flat, or [x, y] pairs) with one size each, linear between them. */
+  points?: Float64Array | ArrayLike<number> | [number, number][];
+  sizes?: Float64Array | ArrayLike<number>;
+  /** The largest area a triangle may have at its centroid (> 0). */
+  maxArea?: SizeFunction;
+}
+
 /** The options a mesh was made with, as mesh() normalised them. */
 export interface ResolvedOptions {
   mode: Mode;
@@ -189,6 +218,10 @@ export interface ResolvedOptions {
   maxAngle: number | 'auto';
   minAngle: number;
   maxArea: number;
+  maxEdge: number;
+  grading: number;
+  /** options.size as given (a function as { function }), the arrays as Float64Arrays. */
+  size?: SizeField;
   maxSteiner: number;
   timeLimit: number;
   adjacency: boolean;
@@ -219,6 +252,12 @@ export interface MeshStats {
    * angle <= 90.
    */
   certified: boolean;
+  /**
+   * With sizes (maxEdge, size, a region's maxArea): the largest ratio over the triangles of
+   * the longest edge to the size at the centroid (area bounds as sqrt(area / bound)); at most
+   * 1 when every size is met. 0 without sizes.
+   */
+  sizeRatio: number;
   /**
    * Acute: the bound every angle is certified strictly below (degrees): maxAngle when the mesh
    * meets it; otherwise ('auto', or a bound not reached) the largest angle rounded up to the

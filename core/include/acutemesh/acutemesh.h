@@ -30,7 +30,7 @@ enum class Mode {
   Delaunay,   // Delaunay triangulation of the vertices; segments and holes ignored
   Cdt,        // constrained Delaunay triangulation of the PSLG, restricted to its domain
   Quality,    // refine until every angle >= minAngle and area <= maxArea (minAngle
-              // kQualityDefaultMinAngle when neither is given)
+              // kQualityDefaultMinAngle when no minAngle, maxArea or size is given)
   NonObtuse,  // refine until every angle <= 90 degrees (exact)
   Acute,      // refine until every angle < maxAngle (default 90), certified exactly
 };
@@ -75,7 +75,7 @@ struct Progress {
   uint32_t vertices;     // current vertex count
 };
 
-// Quality mode's minimum angle when neither minAngle nor maxArea is given (Triangle's -q).
+// Quality mode's minimum angle when no minAngle, maxArea or size is given (Triangle's -q).
 constexpr double kQualityDefaultMinAngle = 20.0;
 
 // The size of the mesh's edges over the plane: h(x, y) is the longest an edge may be near

@@ -3,17 +3,12 @@
 // checks them for meaning (positive sizes, the grid's shape).
 #include <cstdio>
 
+#include "../build.h"
 #include "json.h"
 #include "parse_context.h"
 
 namespace acutemesh::io {
 namespace {
-
-std::string numberText(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 bool readGrid(JsonReader& r, SizeField::Grid& g) {
   bool has[7] = {};
@@ -36,7 +31,7 @@ bool readGrid(JsonReader& r, SizeField::Grid& g) {
       return r.array("\"h\"", [&] {
         double v;
         if (!r.number(v, "a size (a number) in \"h\"")) return false;
-        if (!(v > 0)) return r.ctx().fail(r.line(), "expected sizes > 0 in \"h\", found " + numberText(v));
+        if (!(v > 0)) return r.ctx().fail(r.line(), "expected sizes > 0 in \"h\", found " + detail::shortestText(v));
         g.h.push_back(v);
         return true;
       });
@@ -65,7 +60,7 @@ bool readPoints(JsonReader& r, SizeField& s) {
     });
     if (!ok) return false;
     if (k != 3) return r.fail("3 numbers [x, y, size] before ']'");
-    if (!(v[2] > 0)) return r.ctx().fail(r.line(), "expected a size > 0 in [x, y, size], found " + numberText(v[2]));
+    if (!(v[2] > 0)) return r.ctx().fail(r.line(), "expected a size > 0 in [x, y, size], found " + detail::shortestText(v[2]));
     s.points.insert(s.points.end(), {v[0], v[1]});
     s.sizes.push_back(v[2]);
     return true;

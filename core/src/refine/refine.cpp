@@ -4,6 +4,7 @@
 //    so a run that falls short still ends acute and certified (TargetNotMet);
 //  - a minimum angle above kSureMinAngle, where Delaunay refinement need not terminate: a run
 //    that uses half the budget is made again to kSureMinAngle;
+//  - sizes (acute, non-obtuse) the Steiner budget cannot meet: the angle target alone;
 //  - exact feet (non-obtuse): should some triangle around them not be right at their exact
 //    positions after all, the run is made again without them; not when a budget stopped it
 //    (the certificate counts what is left).
@@ -15,6 +16,7 @@
 #include "params.h"
 #include "below90.h"
 #include "strategies.h"
+#include "target.h"
 
 namespace acutemesh::detail {
 namespace {
@@ -31,6 +33,30 @@ RefineOutcome refineOnce(const RefineState& start, const Pslg& input, const Opti
   best.markFree(freeVertex);
   T = std::move(best.T);
   return outcome;
+}
+
+// Acute or non-obtuse with sizes: sizes too small for the Steiner budget leave a mesh that
+// meets neither target; then the angle target alone is met from the start, which needs far
+// fewer points, and that mesh is the one returned (TargetNotMet, saying so).
+StepResult refineSized(const RefineState& start, const Pslg& input, const Options& options,
+                       const Budget& budget, Triangulation& T, std::vector<uint8_t>& freeVertex,
+                       std::vector<ExactVertex>& exact) {
+  RefineState best;
+  RefineOutcome o = refineWithStrategies(start, input, options, budget, 0, best, exact);
+  Options angles = options;
+  angles.maxArea = 0, angles.maxEdge = 0, angles.size = SizeField{};
+  if (o.met || o.result.status == Status::Cancelled || budget.stop() ||
+      !Target(angles).anyMissed(best)) {
+    best.markFree(freeVertex);
+    T = std::move(best.T);
+    return o.result;
+  }
+  best = RefineState{};
+  const StepResult plain = refineOnce(start, input, angles, budget, 0, T, freeVertex, exact).result;
+  if (!plain.ok()) return plain;
+  return {Status::TargetNotMet,
+          "the sizes asked for need more Steiner points than the budget allows: the mesh meets "
+          "the angle target but not the sizes (a larger maxSteiner, or larger sizes)"};
 }
 
 }  // namespace
@@ -56,6 +82,8 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
     T = std::move(best.T);
     return result;
   }
+  if (options.mode != Mode::Quality && Target(options).sized())
+    return refineSized(start, input, options, budget, T, freeVertex, exact);
   if (options.mode != Mode::Quality || options.minAngle <= kSureMinAngle)
     return refineOnce(start, input, options, budget, 0, T, freeVertex, exact, &start).result;
   const uint32_t half = uint32_t(std::clamp(
