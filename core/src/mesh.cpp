@@ -645,8 +645,9 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
                   options.mode == Mode::Acute;
   Options target = options;
   if (refining) detail::compileSizes(T, inside, input, target);
+  // (Asked for in the options: the input's regional area bounds keep the default.)
   if (target.mode == Mode::Quality && target.minAngle == 0 && target.maxArea == 0 &&
-      !detail::Sizes(target).any())
+      target.maxEdge == 0 && options.size.empty())
     target.minAngle = kQualityDefaultMinAngle;
   std::vector<uint8_t> freeVertex;
   std::vector<detail::ExactVertex> exact;

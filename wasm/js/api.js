@@ -382,9 +382,9 @@ function toOptions(options, input, core, where) {
     maxArea: numberOption(options, 'maxArea', defaults.maxArea),
     maxEdge: numberOption(options, 'maxEdge', defaults.maxEdge),
     grading: numberOption(options, 'grading', defaults.grading),
-    size: sizeOption(options.size),
     maxSteiner,
     timeLimit,
+    ...(options.size === undefined ? {} : { size: sizeOption(options.size) }),
   };
 }
 

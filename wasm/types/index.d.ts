@@ -351,12 +351,9 @@ export interface MeshInput {
   triangles: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number, number]>;
   segments?: Uint32Array | ArrayLike<number> | ReadonlyArray<readonly [number, number]> | null;
   vertexKind?: Uint8Array;
-  /** mesh()'s labels, for the writers that carry them (dropped when not of the mesh's size). */
-  segmentInput?: Uint32Array;
-  vertexMarkers?: Int32Array;
-  segmentMarkers?: Int32Array;
-  triangleAttributes?: Float64Array;
   exactPoints?: ExactPoint[];
+  /** mesh()'s input segment per segment edge (dropped when not one per edge). */
+  segmentInput?: Uint32Array;
   /**
    * For the writers: markers per vertex and per segment edge, attributes per triangle (used
    * when there is one per item; else markers are 1 on the boundary and 0 inside, and no

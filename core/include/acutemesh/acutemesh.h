@@ -75,7 +75,7 @@ struct Progress {
   uint32_t vertices;     // current vertex count
 };
 
-// Quality mode's minimum angle when no minAngle, maxArea or size is given (Triangle's -q).
+// Quality mode's minimum angle when no minAngle, maxArea, maxEdge or size is given (Triangle's -q).
 constexpr double kQualityDefaultMinAngle = 20.0;
 
 // The size of the mesh's edges over the plane: h(x, y) is the longest an edge may be near
