@@ -353,6 +353,47 @@ check "max area alone means quality" run 0 --max-area 0.5 --stats --no-output "$
 check "max area alone: quality mode" stdout_has '"mode": "quality"'
 check "min angle with cdt" run 2 --mode cdt --min-angle 30 "$work/A.poly"
 check "min angle with cdt says" stderr_has "--min-angle / --max-area / --max-edge / --size has no effect with --mode cdt"
+# Sizes: every edge of the written mesh within --max-edge, a size file's grid met (its sizes
+# bilinear over x: 0.05 at x = 0 to 0.3 at x = 1), and their errors.
+# within_sizes JSON H-EXPR: the largest ratio of a triangle's longest edge to H at its centroid
+# (H an expression in x), which must be at most 1.
+within_sizes() {
+  node -e '
+    const m = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"));
+    const h = new Function("x", "return " + process.argv[2]);
+    let worst = 0;
+    for (const t of m.triangles) {
+      const p = t.map((v) => m.vertices[v]);
+      const longest = Math.max(...[0, 1, 2].map((k) => Math.hypot(p[k][0] - p[(k + 1) % 3][0], p[k][1] - p[(k + 1) % 3][1])));
+      worst = Math.max(worst, longest / h((p[0][0] + p[1][0] + p[2][0]) / 3));
+    }
+    if (!(worst <= 1 && worst > 0.5)) { console.log("  worst ratio " + worst); process.exit(1); }
+  ' "$1" "$2"
+}
+check "max edge alone means quality" run 0 --max-edge 0.05 --stats --format json -o "$work/edge" "$work/A.poly"
+check "max edge alone: quality mode" stdout_has '"mode": "quality"'
+check "max edge: every edge within" within_sizes "$work/edge.json" 0.05
+check "max edge acute" run 0 --mode acute --max-edge 0.05 --stats --format json -o "$work/edge" "$work/A.poly"
+check "max edge acute: certified" stdout_has '"certified": true'
+check "max edge acute: every edge within" within_sizes "$work/edge.json" 0.05
+printf '{"grid": {"x0": 0, "y0": 0, "dx": 1, "dy": 1, "nx": 2, "ny": 2,\n  "h": [0.05, 0.3, 0.05, 0.3]}}\n' >"$work/sizes.json"
+check "size file" run 0 --mode nonobtuse --size "$work/sizes.json" --stats --format json -o "$work/sized" "$work/A.poly"
+check "size file: met" stdout_has '"targetMet": true'
+check "size file: every edge within" within_sizes "$work/sized.json" "0.05 + 0.25 * x"
+check "size file with grading" run 0 --mode acute --size "$work/sizes.json" --grading 0.2 --stats --no-output "$work/A.poly"
+check "size file with grading: met" stdout_has '"targetMet": true'
+check "grading alone" run 2 --grading 0.3 "$work/A.poly"
+check "grading alone says" stderr_has "--grading limits how fast sizes grow: give --max-edge or --size too"
+check "max edge -1" run 2 --max-edge -1 "$work/A.poly"
+check "max edge -1 says" stderr_has "--max-edge needs a number >= 0, not '-1'"
+printf '{"points": [[0, 0, 1],\n  [1, 1, -2]]}\n' >"$work/bad-sizes.json"
+check "bad size file" run 2 --size "$work/bad-sizes.json" "$work/A.poly"
+check "bad size file says" stderr_has "bad-sizes.json:2: expected a size > 0 in [x, y, size], found -2"
+check "size file missing" run 2 --size "$work/none.json" "$work/A.poly"
+check "size file missing says" stderr_has "none.json: cannot open"
+check "size file not JSON" run 2 --size "$work/A.poly" "$work/A.poly"
+check "size file not JSON says" stderr_has "expected a size file with the extension .json, found '.poly'"
+check "size with cdt" run 2 --mode cdt --max-edge 1 "$work/A.poly"
 check "max angle with delaunay" run 2 --mode delaunay --max-angle 80 "$work/A.poly"
 check "max angle with delaunay says" stderr_has "--max-angle has no effect with --mode delaunay"
 check "max angle with quality" run 2 --mode quality --max-angle 80 "$work/A.poly"
