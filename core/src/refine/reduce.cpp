@@ -1,6 +1,7 @@
 #include "reduce.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "exact_feet.h"
 #include "slice.h"
@@ -311,7 +312,33 @@ uint32_t Reduce::mergePass() {
   return merged;
 }
 
+namespace {
+constexpr double kRemovalSizeSlack = 1.25;  // how much larger the size may be a star away
+}  // namespace
+
+// With sizes: whether taking v out can leave triangles within them. The triangle that then
+// covers v's place has its corners at v's neighbours, so its longest edge is at least sqrt(3)
+// times v's shortest edge; with room for the size varying (grading) across it.
+bool Reduce::sizesAllowRemoving(uint32_t v) const {
+  const Sizes& sizes = job_.target.sizes;
+  if (!sizes.maxEdge && !sizes.edge) return true;
+  const Triangulation& T = s_.T;
+  const double* p = T.point(v);
+  double shortest2 = std::numeric_limits<double>::infinity();
+  const uint32_t first = T.vertexEdge[v];
+  uint32_t e = first;
+  do {
+    const uint32_t w = T.tri[next(e)];
+    if (w != kGhost) shortest2 = std::min(shortest2, dist2(p, T.point(w)));
+    e = T.opp[prev(e)];
+  } while (e != first && e != kNone);
+  double h = sizes.maxEdge > 0 ? sizes.maxEdge : std::numeric_limits<double>::infinity();
+  if (sizes.edge) h = std::min(h, sizes.edge(p[0], p[1]));
+  return !(3 * shortest2 > kRemovalSizeSlack * kRemovalSizeSlack * h * h);
+}
+
 bool Reduce::removePoint(uint32_t v) {
+  if (!sizesAllowRemoving(v)) return false;
   const bool gone =
       s_.role[v] == kFree ? tryRemove(v) : s_.role[v] == kOnSegment && tryRemoveFromSegment(v);
   if (gone) markChanged();

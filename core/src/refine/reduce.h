@@ -53,6 +53,7 @@ class Reduce {
   bool mergePair(uint32_t u, uint32_t w);
 
  private:
+  bool sizesAllowRemoving(uint32_t v) const;
   struct Moved {
     uint32_t vertex;
     double x, y;

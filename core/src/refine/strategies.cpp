@@ -21,9 +21,10 @@ double steinerBudget(const Pslg& input, const Options& options, double demand) {
 namespace {
 
 constexpr size_t kPolishRun = SIZE_MAX;  // (progressSpan)
+constexpr double kSizedAlone = 16;  // triangles the sizes ask for per input vertex
 
 // The strategies for a mode, in the order they run (see docs/TUNING.md for what each saves).
-std::vector<Strategy> strategiesFor(const Options& options) {
+std::vector<Strategy> strategiesFor(const Options& options, double demand, uint32_t vertices) {
   std::vector<Strategy> strategies = {Strategy{}};
   if (options.mode == Mode::NonObtuse) {
     // Feet on segments; feet first with lazy fans; plain fans. Each with exact slides, then
@@ -56,6 +57,9 @@ std::vector<Strategy> strategiesFor(const Options& options) {
     first.fewestBadFirst = true;
     strategies.insert(strategies.begin(), first);
   }
+  // Sizes that ask for many more triangles than the input has vertices set the count
+  // themselves: the strategies would differ by little, so only the first runs.
+  if (demand > kSizedAlone * vertices) strategies.resize(1);
   if (options.mode == Mode::Acute) {
     // Wide fans in every strategy, and should none of them meet the target (wide fans can
     // crowd a tiny corner), all of them again with the usual fans as fallbacks. Not below 90
@@ -304,10 +308,10 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    uint32_t steinerCap, RefineState& out,
                                    std::vector<ExactVertex>& exact, RefineState* releaseStart) {
   const ProgressRelay::Scope level(budget.progress());  // (nested: reports no fraction)
-  const std::vector<Strategy> strategies = strategiesFor(options);
+  const double demand = sizeDemand(start.T, options);
+  const std::vector<Strategy> strategies = strategiesFor(options, demand, start.T.vertexCount());
   const Target target(options);
   const Jobs jobs{input, options, target, budget, strategies, smallestEdge2(input)};
-  const double demand = sizeDemand(start.T, options);
   const SteinerLimit limit{start.T.vertexCount(), demand, steinerBudget(input, options, demand)};
   StrategyChoice choice(start, budget, steinerCap);
   size_t next = 0;
