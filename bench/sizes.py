@@ -129,7 +129,7 @@ def main():
     shared = os.environ.get('ACUTEMESH_DATA', os.path.join(ROOT, '..', 'shared', 'data'))
     os.makedirs(WORK, exist_ok=True)
     inputs = [('plate (200 x 100, 3 holes, a slot)', os.path.join(ROOT, 'tests', 'data', 'plate.poly'),
-               [4, 1], (100, 50, 0.25, 0.1, 8))]
+               [4, 1], (100, 50, 1, 0.1, 8))]
     superior = os.path.join(shared, 'poly', 'superior.poly')
     skipped = []
     if os.path.exists(superior):

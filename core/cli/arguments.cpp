@@ -295,7 +295,8 @@ std::string usageText() {
   --max-edge L         longest edge wanted (any refinement mode)
   --size FILE          edge sizes over the plane (any refinement mode): a .json with "grid"
                        {x0, y0, dx, dy, nx, ny, h: [nx * ny sizes]} (bilinear) and/or "points"
-                       [[x, y, size], ...] (linear between them)
+                       [[x, y, size], ...] (linear between them), or a .node whose first
+                       vertex attribute is the size
   --grading G          sizes from --max-edge and --size grow at most G per unit of distance
                        (0.2 to 0.5 is usual; default: no limit)
   --max-steiner N      give up after adding N points (exit status 1; default 50 per input

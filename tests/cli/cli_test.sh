@@ -382,6 +382,17 @@ check "size file: met" stdout_has '"targetMet": true'
 check "size file: every edge within" within_sizes "$work/sized.json" "0.05 + 0.25 * x"
 check "size file with grading" run 0 --mode acute --size "$work/sizes.json" --grading 0.2 --stats --no-output "$work/A.poly"
 check "size file with grading: met" stdout_has '"targetMet": true'
+# The same sizes at four points of a .node (first attribute: the size), linear between them.
+printf '4 2 1 0\n1 0 0 0.05\n2 1 0 0.3\n3 1 1 0.3\n4 0 1 0.05\n' >"$work/sizes.node"
+check "size .node" run 0 --mode acute --size "$work/sizes.node" --stats --format json -o "$work/sized-node" "$work/A.poly"
+check "size .node: certified" stdout_has '"certified": true'
+check "size .node: every edge within" within_sizes "$work/sized-node.json" "0.05 + 0.25 * x"
+printf '2 2 1 0\n1 0 0 0.05\n2 1 0 -1\n' >"$work/bad-sizes.node"
+check "bad size .node" run 2 --size "$work/bad-sizes.node" "$work/A.poly"
+check "bad size .node says" stderr_has "bad-sizes.node: vertex 2: expected a size > 0 (its first attribute), found -1"
+check "README's solver example" run 0 --mode acute --size "$data/plate.sizes.json" --grading 0.2 --stats --format msh -o "$work/plate-sized" "$data/plate.poly"
+check "README's solver example: met, certified" stdout_has '"targetMet": true, "certified": true'
+check "README's solver example: .msh" grep -q '^\$MeshFormat' "$work/plate-sized.msh"
 check "grading alone" run 2 --grading 0.3 "$work/A.poly"
 check "grading alone says" stderr_has "--grading limits how fast sizes grow: give --max-edge or --size too"
 check "max edge -1" run 2 --max-edge -1 "$work/A.poly"
@@ -392,7 +403,7 @@ check "bad size file says" stderr_has "bad-sizes.json:2: expected a size > 0 in 
 check "size file missing" run 2 --size "$work/none.json" "$work/A.poly"
 check "size file missing says" stderr_has "none.json: cannot open"
 check "size file not JSON" run 2 --size "$work/A.poly" "$work/A.poly"
-check "size file not JSON says" stderr_has "expected a size file with the extension .json, found '.poly'"
+check "size file not JSON says" stderr_has "expected a size file with the extension .json or .node, found '.poly'"
 check "size with cdt" run 2 --mode cdt --max-edge 1 "$work/A.poly"
 check "max angle with delaunay" run 2 --mode delaunay --max-angle 80 "$work/A.poly"
 check "max angle with delaunay says" stderr_has "--max-angle has no effect with --mode delaunay"

@@ -8,6 +8,7 @@
 #include <dirent.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -65,6 +66,26 @@ inline bool startsWith(const std::string& s, const std::string& prefix) {
 
 // The same double to the bit (0 and -0 differ, a NaN equals itself).
 inline bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// `count` islands on a 4-wide grid 3 apart, island i a ring of `corners` points at
+// radius(i, angle) around (3 (i % 4), 3 (i / 4)) with a region of attribute i at its centre:
+// enough of them make a domain meshed part by part (kPartsFrom triangles).
+inline acutemesh::Pslg archipelago(int count, int corners, double (*radius)(int, double)) {
+  acutemesh::Pslg in;
+  for (int i = 0; i < count; ++i) {
+    const double cx = 3.0 * (i % 4), cy = 3.0 * (i / 4);
+    const uint32_t first = uint32_t(in.vertexCount());
+    for (int k = 0; k < corners; ++k) {
+      const double a = 2 * M_PI * k / corners, r = radius(i, a);
+      in.points.insert(in.points.end(), {cx + r * std::cos(a), cy + r * std::sin(a)});
+      in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % corners});
+    }
+    acutemesh::Region g;
+    g.x = cx, g.y = cy, g.attribute = i;
+    in.regions.push_back(g);
+  }
+  return in;
+}
 
 // validate()'s errors, one per line; empty when the mesh is valid.
 inline std::string validationErrors(const acutemesh::Pslg& in, const acutemesh::Options& o,

@@ -224,21 +224,10 @@ TEST(Labels, ScaledInputGetsTheSameLabels) {
 // marker and a region: every island's triangles get its attribute, its boundary edges its
 // marker, and one thread or two make the same labels.
 TEST(Labels, ArchipelagoByPartsOnAnyThreads) {
-  Pslg in;
   constexpr int kIslands = 16, kCorners = 300;
-  for (int i = 0; i < kIslands; ++i) {
-    const double cx = 3.0 * (i % 4), cy = 3.0 * (i / 4);
-    const uint32_t first = uint32_t(in.vertexCount());
-    for (int k = 0; k < kCorners; ++k) {
-      const double a = 2 * M_PI * k / kCorners, radius = 1 + 0.1 * std::sin(5 * a + i);
-      in.points.insert(in.points.end(), {cx + radius * std::cos(a), cy + radius * std::sin(a)});
-      in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % kCorners});
-      in.segmentMarkers.push_back(100 + i);
-    }
-    Region g;
-    g.x = cx, g.y = cy, g.attribute = i;
-    in.regions.push_back(g);
-  }
+  Pslg in = fixtures::archipelago(kIslands, kCorners,
+                                  [](int i, double a) { return 1 + 0.1 * std::sin(5 * a + i); });
+  for (int i = 0; i < kIslands; ++i) in.segmentMarkers.insert(in.segmentMarkers.end(), kCorners, 100 + i);
   in.vertexMarkers.assign(in.vertexCount(), 0);
   in.vertexMarkers[0] = -3;  // (its own marker stays)
   Options cdt;

@@ -259,20 +259,8 @@ TEST(Sizes, ScaledInputsMeshAlike) {
 // Many islands (meshed part by part): one thread or two give the same mesh, each island's
 // region bound and the size field met.
 TEST(Sizes, ByPartsOnAnyThreads) {
-  Pslg in;
-  constexpr int kIslands = 16, kCorners = 300;
-  for (int i = 0; i < kIslands; ++i) {
-    const double cx = 3.0 * (i % 4), cy = 3.0 * (i / 4);
-    const uint32_t first = uint32_t(in.vertexCount());
-    for (int k = 0; k < kCorners; ++k) {
-      const double a = 2 * M_PI * k / kCorners;
-      in.points.insert(in.points.end(), {cx + std::cos(a), cy + std::sin(a)});
-      in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % kCorners});
-    }
-    Region g;
-    g.x = cx, g.y = cy, g.attribute = i, g.maxArea = i % 2 ? 0.004 : 0;
-    in.regions.push_back(g);
-  }
+  Pslg in = fixtures::archipelago(16, 300, [](int, double) { return 1.0; });
+  for (Region& g : in.regions) g.maxArea = int(g.attribute) % 2 ? 0.004 : 0;
   Options o;
   o.mode = Mode::Acute;
   o.size.function = [](double x, double) { return 0.1 + 0.04 * x; };
@@ -402,6 +390,47 @@ TEST(Sizes, SizeFiles) {
     EXPECT_FALSE(r.ok) << text;
     EXPECT_NE(r.message.find(says), std::string::npos) << text << " -> " << r.message;
     EXPECT_TRUE(out.grid.h.empty() && out.points.empty()) << text;
+  }
+  // A .node: the first attribute is the size, the others and a marker ignored.
+  SizeField n;
+  p = parseSizeNode("# sizes\n3 2 2 1\n1 0 0 0.5 9 1\n2 2 0 1.5 9 0\n3 0 2 2 9 0\n", "s.node", n);
+  ASSERT_TRUE(p.ok) << p.message;
+  EXPECT_EQ(n.points, (std::vector<double>{0, 0, 2, 0, 0, 2}));
+  EXPECT_EQ(n.sizes, (std::vector<double>{0.5, 1.5, 2}));
+  const std::pair<const char*, const char*> badNode[] = {
+      {"2 2 0 0\n1 0 0\n2 1 0\n", "s.node:1: expected at least one attribute per vertex (its size)"},
+      {"2 2 1 0\n1 0 0 1\n2 1 0 0\n", "s.node: vertex 2: expected a size > 0 (its first attribute), found 0"},
+      {"2 2 1 0\n1 0 0 1\n2 1 0\n", "s.node: vertex 2: expected a size > 0 (its first attribute), found 0"},
+      {"2 2 1 0\n1 0 0 1\n2 1 0 big\n", "s.node:3: expected attribute 1 (a number), found 'big'"},
+      {"3 2 1 0\n1 0 0 1\n", "s.node:1: expected a vertex count the rest of the text can hold"},
+  };
+  for (const auto& [text, says] : badNode) {
+    SizeField out;
+    const ParseResult r = parseSizeNode(text, "s.node", out);
+    EXPECT_FALSE(r.ok) << text;
+    EXPECT_NE(r.message.find(says), std::string::npos) << text << " -> " << r.message;
+    EXPECT_TRUE(out.points.empty()) << text;
+  }
+}
+
+// Every fixture of tests/data (.poly) in every refining mode with a max edge of a sixteenth
+// of its box: every edge within it, the angle target met.
+TEST(Sizes, EveryFixtureMeetsMaxEdge) {
+  for (const char* name : {"A.poly", "plate.poly", "naca0012.poly", "io/marked-regions.poly", "io/regions.poly", "io/enclave.poly"}) {
+    const Pslg in = fixtures::load(fixtures::kData + "/" + name).pslg;
+    double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf};
+    for (size_t i = 0; i < in.points.size(); ++i)
+      lo[i % 2] = std::min(lo[i % 2], in.points[i]), hi[i % 2] = std::max(hi[i % 2], in.points[i]);
+    const double h = std::max(hi[0] - lo[0], hi[1] - lo[1]) / 16;
+    for (Mode mode : kRefining) {
+      Options o;
+      o.mode = mode;
+      o.maxEdge = h;
+      const Result r = mesh(in, o);
+      const std::string what = std::string(name) + " " + nameOf(mode);
+      expectMet(in, o, r, what);
+      EXPECT_LE(worstRatio(r.mesh, [h](double, double) { return h; }), 1) << what;
+    }
   }
 }
 

@@ -69,7 +69,11 @@ ParseResult parseJson(std::string_view text, const std::string& name, Input& out
 // Sizes must be > 0. Fills the grid and the points of `out` only on success.
 ParseResult parseSizeField(std::string_view text, const std::string& name, SizeField& out,
                            std::vector<std::string>* warnings = nullptr);
-// The same from a file (.json).
+// Sizes at points as a Triangle .node: each vertex's first attribute is its size (> 0), into
+// SizeField::points and sizes (the "points" of a size file).
+ParseResult parseSizeNode(std::string_view text, const std::string& name, SizeField& out,
+                          std::vector<std::string>* warnings = nullptr);
+// A size file by extension: .json (parseSizeField) or .node (parseSizeNode).
 ParseResult readSizeFile(const std::string& path, SizeField& out,
                          std::vector<std::string>* warnings = nullptr);
 

@@ -97,12 +97,13 @@ ParseResult readInputFile(const std::string& path, Input& out) {
 
 ParseResult readSizeFile(const std::string& path, SizeField& out, std::vector<std::string>* warnings) {
   const std::string ext = lowerExtension(path);
-  if (ext != ".json")
-    return failure(path + ": expected a size file with the extension .json, found " +
+  if (ext != ".json" && ext != ".node")
+    return failure(path + ": expected a size file with the extension .json or .node, found " +
                    (ext.empty() ? std::string("none") : "'" + ext + "'"));
   std::string text, error;
   if (!readWholeFile(path, text, error)) return failure(std::move(error));
-  return parseSizeField(text, path, out, warnings);
+  return ext == ".node" ? parseSizeNode(text, path, out, warnings)
+                        : parseSizeField(text, path, out, warnings);
 }
 
 }  // namespace acutemesh

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "../build.h"
 #include "numbers.h"
 #include "parse_context.h"
 
@@ -224,17 +225,18 @@ inline bool readId(Fields& f, Ctx& c, size_t line, const char* what, int64_t& id
 // attributes) then up to `markers` (0 or 1) integers, the marker. Triangle lets attributes and
 // markers default to 0.
 bool readExtras(Fields& f, Ctx& c, size_t line, uint64_t attrs, uint64_t markers,
-                const std::string& layout, int32_t& marker) {
+                const std::string& layout, int32_t& marker, double* firstAttribute = nullptr) {
   marker = 0;
   std::string_view tok;
   for (uint64_t i = 0; i < attrs + markers; ++i) {
     if (!f.next(tok)) return true;
     if (i < attrs) {
-      double d;
+      double d = 0;
       NumErr e = parseFieldDouble(tok, d);
       if (e == NumErr::NotNumber)
         return c.fail(line, "expected attribute " + std::to_string(i + 1) + " (a number), found " +
                                 quote(tok));
+      if (i == 0 && firstAttribute) *firstAttribute = d;
     } else {
       int64_t m;
       if (!parseFieldInt(tok, m) || m < INT32_MIN || m > INT32_MAX)
@@ -287,7 +289,8 @@ bool readNodeHeader(Lines& L, Ctx& c, NodeHeader& h) {
 // The vertex lines after a header, appended to `pts` and, when the header announces them,
 // their markers to `markers` (the caller's vectors are empty).
 bool readVertexLines(Lines& L, Ctx& c, const NodeHeader& h, std::vector<double>& pts,
-                     std::vector<int32_t>& markers, VertexList& vl) {
+                     std::vector<int32_t>& markers, VertexList& vl,
+                     std::vector<double>* firstAttributes = nullptr) {
   const uint64_t room = maxItems(L.remaining(), 5);  // "0 0 0"
   if (h.count > room)
     return c.fail(h.line, "expected a vertex count the rest of the text can hold (at most " +
@@ -301,6 +304,7 @@ bool readVertexLines(Lines& L, Ctx& c, const NodeHeader& h, std::vector<double>&
     int64_t id;
     double x, y;
     int32_t marker = 0;
+    double attribute = 0;  // (Triangle's default for a missing one)
     const bool fast = L.fastVertexLine(h.attrs == 0 && h.markers == 1, id, x, y, marker);
     if (!fast && !L.next(line))
       return c.fail(L.eofLine(), "expected vertex line " + std::to_string(i + 1) + " of " +
@@ -324,10 +328,11 @@ bool readVertexLines(Lines& L, Ctx& c, const NodeHeader& h, std::vector<double>&
     }
     if (!fast &&
         (!readCoord(f, c, ln, "x coordinate", x) || !readCoord(f, c, ln, "y coordinate", y) ||
-         !readExtras(f, c, ln, h.attrs, h.markers, layout, marker)))
+         !readExtras(f, c, ln, h.attrs, h.markers, layout, marker, &attribute)))
       return false;
     pts.push_back(x);
     pts.push_back(y);
+    if (firstAttributes) firstAttributes->push_back(attribute);
     if (h.markers) markers.push_back(marker);
   }
   vl.count = static_cast<size_t>(h.count);
@@ -551,6 +556,31 @@ ParseResult parsePoly(std::string_view text, const std::string& name, Input& out
   if (!io::parsePolyImpl(text, c, in, nodeText, nodeName)) return failure(std::move(c.message));
   in.format = InputFormat::Poly;
   out = std::move(in);
+  return {};
+}
+
+ParseResult parseSizeNode(std::string_view text, const std::string& name, SizeField& out,
+                          std::vector<std::string>* warnings) {
+  std::vector<std::string> notes;
+  io::Ctx c{name, &notes, {}};
+  io::Lines L(text);
+  io::NodeHeader h;
+  io::VertexList vl;
+  std::vector<double> points, sizes;
+  std::vector<int32_t> markers;
+  if (!io::readNodeHeader(L, c, h)) return failure(std::move(c.message));
+  if (h.attrs == 0)
+    return failure(name + ":" + std::to_string(h.line) +
+                   ": expected at least one attribute per vertex (its size) in the header, found 0");
+  if (!io::readVertexLines(L, c, h, points, markers, vl, &sizes)) return failure(std::move(c.message));
+  for (size_t i = 0; i < sizes.size(); ++i)
+    if (!(sizes[i] > 0))
+      return failure(name + ": vertex " + std::to_string(vl.first + i) +
+                     ": expected a size > 0 (its first attribute), found " + detail::shortestText(sizes[i]));
+  io::warnTrailing(L, c, "the vertices");
+  out.points = std::move(points);
+  out.sizes = std::move(sizes);
+  if (warnings) warnings->insert(warnings->end(), notes.begin(), notes.end());
   return {};
 }
 

@@ -338,9 +338,9 @@ bool Reduce::sizesAllowRemoving(uint32_t v) const {
 }
 
 bool Reduce::removePoint(uint32_t v) {
+  if (s_.role[v] != kFree && s_.role[v] != kOnSegment) return false;
   if (!sizesAllowRemoving(v)) return false;
-  const bool gone =
-      s_.role[v] == kFree ? tryRemove(v) : s_.role[v] == kOnSegment && tryRemoveFromSegment(v);
+  const bool gone = s_.role[v] == kFree ? tryRemove(v) : tryRemoveFromSegment(v);
   if (gone) markChanged();
   return gone;
 }
