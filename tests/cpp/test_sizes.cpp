@@ -96,6 +96,25 @@ TEST(Sizes, MaxEdgeInEveryRefiningMode) {
   }
 }
 
+// Below 90 degrees too: maxAngle 85 met with the sizes, and 'auto' keeps them.
+TEST(Sizes, BelowNinetyKeepsTheSizes) {
+  const Pslg in = fixtures::load(fixtures::kData + "/A.poly").pslg;
+  for (double bound : {85.0, kAutoMaxAngle}) {
+    Options o;
+    o.mode = Mode::Acute;
+    o.maxAngle = bound;
+    o.maxEdge = 0.05;
+    const Result r = mesh(in, o);
+    const std::string what = "maxAngle " + std::to_string(bound);
+    expectMet(in, o, r, what);
+    EXPECT_LE(worstRatio(r.mesh, [](double, double) { return 0.05; }), 1) << what;
+    EXPECT_LT(r.stats.angleBound, 90) << what;
+    if (bound > 0) {
+      EXPECT_EQ(r.stats.angleBound, 85) << what;
+    }
+  }
+}
+
 // h = 0.8 + 0.05 x: the left end gets much smaller triangles than the right.
 TEST(Sizes, FunctionGradesTheMesh) {
   const Pslg in = plate();
