@@ -133,6 +133,33 @@ void limitGradient(SizeField::Grid& g, double grading) {
   }
 }
 
+// The domain's own small features as sizes on the grid, for the grading to spread: at each
+// vertex of the constrained triangulation its shortest domain edge (the local feature size),
+// at the grid node nearest to it. Without this a grading would have nothing to act on where
+// the sizes given are uniform.
+void seedFeatureSizes(const Triangulation& T, const std::vector<uint8_t>& inside, SizeField::Grid& g) {
+  std::vector<double> shortest(T.vertexCount(), kInf);
+  for (uint32_t t = 0; t < T.triangleSlots() && t < inside.size(); ++t) {
+    if (!inside[t]) continue;
+    const uint32_t* v = &T.tri[3 * t];
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = v[k], b = v[(k + 1) % 3];
+      if (a == kGhost || b == kGhost) continue;
+      const double *p = T.point(a), *q = T.point(b);
+      const double d = std::hypot(p[0] - q[0], p[1] - q[1]);
+      shortest[a] = std::min(shortest[a], d), shortest[b] = std::min(shortest[b], d);
+    }
+  }
+  for (uint32_t v = 0; v < T.vertexCount(); ++v) {
+    if (!(shortest[v] < kInf)) continue;
+    const double* p = T.point(v);
+    const double i = std::clamp(std::round((p[0] - g.x0) / g.dx), 0.0, double(g.nx - 1));
+    const double j = std::clamp(std::round((p[1] - g.y0) / g.dy), 0.0, double(g.ny - 1));
+    double& h = g.h[size_t(i) + size_t(g.nx) * size_t(j)];
+    h = std::min(h, shortest[v]);
+  }
+}
+
 // The input's box as a background grid of square cells, every node +infinity.
 SizeField::Grid backgroundGrid(const Pslg& input) {
   double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf};
@@ -369,7 +396,10 @@ void compileSizes(const Triangulation& T, const std::vector<uint8_t>& inside, co
         g.h[i + size_t(g.nx) * j] = h;
       }
     if (!s.sizes.empty()) sampleScattered(s, g);
-    if (o.grading > 0) limitGradient(g, o.grading);
+    if (o.grading > 0) {
+      seedFeatureSizes(T, inside, g);
+      limitGradient(g, o.grading);
+    }
     for (double& h : g.h)
       if (std::isinf(h)) h = std::numeric_limits<double>::max();  // (bilinear of +inf: NaN)
     direct.push_back([g = std::make_shared<const SizeField::Grid>(std::move(g))](
