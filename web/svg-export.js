@@ -44,11 +44,17 @@ export function meshToSvg(m, cls, nInput) {
   return [
     `<svg xmlns="http://www.w3.org/2000/svg" viewBox="${f(-pad)} ${f(-pad)} ${w} ${h}">`,
     ...CLASSES.map((c, k) => (byClass[k].length
-      ? `<path data-class="${c.label}" fill="${c.color}" d="${byClass[k].join('')}"/>` : '')).filter(Boolean),
+      ? `<path data-class="${xmlAttribute(c.label)}" fill="${c.color}" d="${byClass[k].join('')}"/>` : '')).filter(Boolean),
     `<path fill="none" stroke="#5d6675" stroke-opacity="0.55" stroke-width="${f(line)}" d="${edges.join('')}"/>`,
     `<path fill="none" stroke="#111" stroke-width="${f(3.5 * line)}" stroke-linecap="round" d="${segments.join('')}"/>`,
     `<g fill="${STEINER_COLOR}">${dots.join('')}</g>`,
     '</svg>',
     '',
   ].join('\n');
+}
+
+// A label as an XML attribute value: the class "< 70°" would otherwise make the file
+// malformed (no '<' in an attribute), and an SVG viewer refuse it.
+function xmlAttribute(text) {
+  return String(text).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 }
