@@ -7,6 +7,8 @@ export const RANGES = {
   minAngle: { label: 'Min angle', unit: '°', ok: (v) => v >= 0 && v < 60,
     words: 'from 0° to below 60°', why: '0: none; above 40° it is seldom reached' },
   maxArea: { label: 'Max area', unit: '', ok: (v) => v >= 0, words: '0 (no bound) or more' },
+  maxEdge: { label: 'Max edge', unit: '', ok: (v) => v >= 0, words: '0 (none) or more' },
+  grading: { label: 'Grading', unit: '', ok: (v) => v >= 0, words: '0 (none) or more', why: '0.2 to 0.5 is usual' },
   maxSteiner: { label: 'Steiner budget', unit: '', ok: (v) => v >= 0 && Number.isInteger(v),
     words: 'a whole number, 0 (automatic) or more' },
   tolerance: { label: 'Tolerance', unit: '‰', ok: (v) => v >= 0.1 && v <= 100, words: 'from 0.1 to 100' },

@@ -9,33 +9,39 @@ import { MeshView } from './view.js';
 import { analyse, CLASSES } from './angles.js';
 import { drawHistogram, SMALL_ANGLE_COLOR } from './histogram.js';
 import { AUTO, angleFloor, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
-import { verdict, formatMs } from './verdict.js';
+import { verdict, formatMs, sizeWords } from './verdict.js';
 import { meshToSvg } from './svg-export.js';
 import { RANGES, checkFields, problem } from './form.js';
 import { DrawTool, encodeRings, decodeRings } from './draw.js';
 import { parseFont, textToRings, fontName, missingGlyphs } from './loaders/font.js';
 import { loadFile } from './loaders/index.js';
+import { regionsOf } from './regions.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
   text: $('text'), font: $('font'), tolerance: $('tolerance'), sample: $('sample'), file: $('file'),
   draw: $('draw'), drawClose: $('draw-close'), drawClear: $('draw-clear'), source: $('source'),
   mode: $('mode'), maxAngle: $('maxAngle'), maxAngleAuto: $('maxAngleAuto'), angleFloor: $('angleFloor'), minAngle: $('minAngle'), maxArea: $('maxArea'),
-  maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
+  maxEdge: $('maxEdge'), grading: $('grading'), maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
   status: $('status'), stats: $('stats'), histogram: $('histogram'), legend: $('legend'),
   view: $('view'), fit: $('fit'), showEdges: $('show-edges'), showSteiner: $('show-steiner'),
+  showRegions: $('show-regions'), regionsToggle: $('regions-toggle'),
   dropHint: $('drop-hint'), downloads: $('downloads'), formError: $('form-error'), linkNote: $('link-note'),
 };
 // The number fields checked against their ranges (form.js) before a run.
-const FIELDS = { maxAngle: ui.maxAngle, minAngle: ui.minAngle, maxArea: ui.maxArea, maxSteiner: ui.maxSteiner, tolerance: ui.tolerance };
+const FIELDS = { maxAngle: ui.maxAngle, minAngle: ui.minAngle, maxArea: ui.maxArea, maxEdge: ui.maxEdge, grading: ui.grading,
+  maxSteiner: ui.maxSteiner, tolerance: ui.tolerance };
 
 const BUNDLED_FONTS = {
   'pagella-regular': 'fonts/texgyrepagella-regular.otf',
   'pagella-bold': 'fonts/texgyrepagella-bold.otf',
 };
 // What the option inputs hold when the URL says nothing: the page's mode, and otherwise the
-// mesher's defaults (vocabulary.defaults; tests/web checks that they agree).
-const OPTION_DEFAULTS = { mode: 'acute', maxAngle: '90', minAngle: '0', maxArea: '0', maxSteiner: '0' };
+// mesher's defaults (vocabulary.defaults; tests/web checks that they agree). Max edge and
+// grading start empty: none (the mesher's 0).
+const OPTION_DEFAULTS = { mode: 'acute', maxAngle: '90', minAngle: '0', maxArea: '0', maxEdge: '', grading: '', maxSteiner: '0' };
+// The samples: maps are GeoJSON, the others name their file.
+const SAMPLE_FILES = { gear: 'samples/gear.svg', plate: 'samples/plate.poly' };
 const TEXT_DEFAULTS = { text: 'Acute', font: 'pagella-regular', tol: '5' };
 
 const view = new MeshView(ui.view);
@@ -196,7 +202,9 @@ function stopRun() {
 }
 
 function clearResult() {
+  if (lastResult?.regions) buildLegend();
   lastResult = null;
+  ui.regionsToggle.hidden = true;
   ui.stats.replaceChildren();
   ui.stats.dataset.result = '';
   drawHistogram(ui.histogram, null);
@@ -246,7 +254,7 @@ async function takeFile(file, type = 'file') {
 }
 
 async function takeSample(name) {
-  const file = name === 'gear' ? 'samples/gear.svg' : `samples/${name}.geojson`;
+  const file = SAMPLE_FILES[name] || `samples/${name}.geojson`;
   const r = await fetch(file);
   if (!r.ok) throw new Error(`${file}: HTTP ${r.status}`);
   const blob = await r.blob();
@@ -265,6 +273,9 @@ function meshOptions() {
   if (o.mode !== 'cdt') {
     if (num(ui.minAngle) > 0) o.minAngle = num(ui.minAngle);
     if (num(ui.maxArea) > 0) o.maxArea = num(ui.maxArea);
+    // Plain numbers: the worker takes no size function.
+    if (num(ui.maxEdge) > 0) o.maxEdge = num(ui.maxEdge);
+    if (num(ui.grading) > 0) o.grading = num(ui.grading);
     if (num(ui.maxSteiner) > 0) o.maxSteiner = Math.round(num(ui.maxSteiner));
   }
   return o;
@@ -279,7 +290,7 @@ function syncOptionInputs() {
   ui.maxAngle.disabled = m !== 'acute' || autoChosen();
   ui.maxAngleAuto.disabled = m !== 'acute';
   showFloor();
-  for (const el of [ui.minAngle, ui.maxArea, ui.maxSteiner]) el.disabled = m === 'cdt';
+  for (const el of [ui.minAngle, ui.maxArea, ui.maxEdge, ui.grading, ui.maxSteiner]) el.disabled = m === 'cdt';
   checkFields(FIELDS, ui.formError);
   // An empty input means the mesher's default, which the placeholder shows.
   if (!vocabulary) return;
@@ -288,6 +299,9 @@ function syncOptionInputs() {
   ui.maxAngle.placeholder = String(d.maxAngle);
   ui.minAngle.placeholder = String(m === 'quality' && bothUnset ? d.qualityMinAngle : d.minAngle);
   ui.maxArea.placeholder = String(d.maxArea);
+  // The mesher's 0 for these means none, which the empty field says in words.
+  ui.maxEdge.placeholder = d.maxEdge > 0 ? String(d.maxEdge) : 'none';
+  ui.grading.placeholder = d.grading > 0 ? String(d.grading) : 'none';
   ui.maxSteiner.placeholder = String(d.maxSteiner);
 }
 
@@ -326,7 +340,7 @@ function takeVocabulary(am) {
     b.dataset.testid = `download-${f.name}`;
     b.dataset.format = f.name;
     b.textContent = f.extension;
-    b.title = f.name === 'svg' ? 'SVG: the mesh as the view draws it, triangles coloured by their largest angle' : f.description;
+    b.title = f.name === 'svg' ? 'SVG: the mesh as the view draws it, triangles coloured as in the legend (largest angle, or region)' : f.description;
     b.disabled = lastResult === null;
     b.addEventListener('click', () => download(f.name));
     ui.downloads.insertBefore(b, png);
@@ -397,7 +411,11 @@ function show(am, pslg, input, options, m, wallMs) {
   const corner = s.smallestDomainAngle < 360 ? s.smallestDomainAngle : smallestDomainCorner(m.points, m.triangles, m.segments);
   floorInfo = { corner, floor: Number.isFinite(s.angleFloor) && s.smallestDomainAngle < 360 ? s.angleFloor : angleFloor(corner), from: 'run' };
   showFloor();
-  view.setMesh(m, a.cls, nInput);
+  // Regions (more than one attribute value): coloured by region unless the box is cleared.
+  const regions = regionsOf(m.triangleAttributes);
+  lastResult = { am, mesh: m, label: input.label, angles: a.angles, cls: a.cls, nInput, regions };
+  ui.regionsToggle.hidden = !regions;
+  paintMesh();
   showSource(describeInput(input));
   draw.hide();
   if (input.key !== lastMeshedKey) view.fit();
@@ -410,7 +428,7 @@ function show(am, pslg, input, options, m, wallMs) {
     floor: options.mode === 'acute' ? floorInfo.floor : null,
     max: finite(s.maxAngle),
   };
-  lastResult = { am, mesh: m, label: input.label, angles: a.angles, marks, cls: a.cls, nInput };
+  lastResult.marks = marks;
   drawHistogram(ui.histogram, a.angles, marks);
   const result = {
     triangles: m.triangles.length / 3,
@@ -429,6 +447,12 @@ function show(am, pslg, input, options, m, wallMs) {
     inputVertices: nInput,
     wallMilliseconds: round(wallMs, 1),
     status: m.status ?? null,
+    // The largest longest-edge / size over the triangles (<= 1: every size met); null when
+    // no size was asked for (max edge, max area, a region's area bound).
+    sizeRatio: s.sizeRatio > 0 ? s.sizeRatio : null,
+    regions: regions ? regions.values.length : 0,
+    regionAreas: (pslg.regions || []).some((g) => g.maxArea > 0),
+    regionAttributes: regions ? regions.values : [],
     options,  // as the page asked for them
   };
   renderStats(result);
@@ -436,7 +460,13 @@ function show(am, pslg, input, options, m, wallMs) {
   ui.stats.dataset.runs = String(++runs);
   takeVocabulary(am);
   for (const b of ui.downloads.querySelectorAll('[data-format]')) b.disabled = false;
-  const said = verdict(result, m, s.warnings || []);
+  // Grading limits how fast sizes grow; the page's one max edge is the same everywhere and a
+  // region's area bound is not graded, so there is nothing for it to act on: said, not hidden.
+  const notes = [...(s.warnings || [])];
+  if (options.grading > 0 && options.maxEdge > 0) {
+    notes.push(`Grading ${options.grading} changed nothing here: the max edge is the same everywhere and regions' area bounds are not graded (a size that varies, the package's size option, is what it grades).`);
+  }
+  const said = verdict(result, m, notes);
   setStatus(said.text, said.kind);
   // The first mesh on screen: when the frame that draws it has run.
   if (runs === 1) {
@@ -474,6 +504,8 @@ function renderStats(r) {
     ['Certified', r.mode === 'acute' || r.mode === 'nonobtuse' ? (r.certified ? 'yes' : 'no') : 'n/a'],
     ['Time', formatMs(r.milliseconds)],
   ];
+  if (r.sizeRatio != null) rows.push(['Sizes', sizeWords(r.sizeRatio)]);
+  if (r.regions) rows.push(['Regions', String(r.regions)]);
   if (r.mode === 'acute') {
     const target = r.askedMaxAngle === AUTO ? 'auto' : `${r.askedMaxAngle}°`;
     rows.push(['Bound', r.targetMet ? (r.angleBound != null ? `< ${r.angleBound}°` : target) : 'not met']);
@@ -486,18 +518,50 @@ function renderStats(r) {
     dd.textContent = v;
     if (k === 'Certified' && v !== 'n/a') dd.className = r.certified ? 'yes' : 'no';
     if (k === 'Bound') dd.className = r.targetMet ? 'yes' : 'no';
+    if (k === 'Sizes') dd.className = r.sizeRatio <= 1 ? 'yes' : 'no';
     return [dt, dd];
   }));
 }
 
-function buildLegend() {
-  const items = CLASSES.map((c) => {
+// What the view fills the triangles by: the regions (when the mesh has them and the box is
+// ticked) or the largest angle's classes. Returns { by, cls, fills: [{ color, label }] }.
+function meshFills(r) {
+  if (r.regions && ui.showRegions.checked) {
+    const { values, cls, colors } = r.regions;
+    return { by: 'regions', cls, fills: colors.map((color, k) => ({ color, label: `attribute ${values[k]}` })) };
+  }
+  return { by: 'angles', cls: r.cls, fills: CLASSES.map((c) => ({ color: c.color, label: c.label })) };
+}
+
+// The shown mesh, in the fills chosen, with its legend.
+function paintMesh() {
+  const r = lastResult;
+  const f = meshFills(r);
+  view.setMesh(r.mesh, f.cls, r.nInput, f.fills.map((x) => x.color));
+  ui.view.dataset.fill = f.by;
+  buildLegend(f.by === 'regions' ? r.regions : null);
+}
+
+function buildLegend(regions = null) {
+  const item = (color, label) => {
     const span = document.createElement('span');
     const i = document.createElement('i');
-    i.style.background = c.color;
-    span.append(i, c.label);
+    i.style.background = color;
+    span.append(i, label);
     return span;
-  });
+  };
+  let items;
+  if (regions) {
+    const n = regions.values.length, K = regions.colors.length;
+    items = regions.values.map((v, k) => item(regions.colors[k % K], `attribute ${v}`));
+    const line = document.createElement('span');
+    line.className = 'regions-line';
+    line.dataset.testid = 'regions-line';
+    line.textContent = `${n} regions, by the input's regional attribute${n > K ? ` (the colours repeat after ${K})` : ''}`;
+    items.unshift(line);
+  } else {
+    items = CLASSES.map((c) => item(c.color, c.label));
+  }
   const seg = document.createElement('span');
   seg.className = 'mark-seg';
   seg.append(document.createElement('i'), 'input segment');
@@ -512,7 +576,8 @@ function buildLegend() {
   swatch.style.background = SMALL_ANGLE_COLOR;
   small.append(swatch, 'histogram: angles < 60° (never a largest)');
   ui.legend.replaceChildren(...items, seg, st, small);
-  ui.legend.title = 'Triangles are coloured by their largest angle';
+  ui.legend.title = regions ? 'Triangles are coloured by their region' : 'Triangles are coloured by their largest angle';
+  ui.legend.setAttribute('aria-label', regions ? 'Triangle colours by region' : 'Triangle colours by largest angle');
 }
 
 // ---- downloads ----------------------------------------------------------------------------
@@ -536,7 +601,8 @@ function download(format) {
   }
   const f = am.vocabulary.outputFormats.find((e) => e.name === format);
   // SVG: the picture as the view colours it, not the mesher's one-colour drawing.
-  const text = format === 'svg' ? meshToSvg(mesh, lastResult.cls, lastResult.nInput) : am.write(mesh, format);
+  const fills = meshFills(lastResult);
+  const text = format === 'svg' ? meshToSvg(mesh, fills.cls, lastResult.nInput, fills.fills) : am.write(mesh, format);
   saveBlob(new Blob([text], { type: f.mediaType }), `${label}${f.extension}`);
 }
 
@@ -575,7 +641,7 @@ function loadUrl() {
     } else if (k === 'mode' && ![...ui.mode.options].some((o) => o.value === v)) {
       fallBack(k, v, 'is not a mode here', ui.mode.options[0].textContent);
     } else if (RANGES[k] && problem(k, v)) {
-      fallBack(k, v, `is out of range (${RANGES[k].label.toLowerCase()}: ${RANGES[k].words})`, `${d}${RANGES[k].unit}`);
+      fallBack(k, v, `is out of range (${RANGES[k].label.toLowerCase()}: ${RANGES[k].words})`, d === '' ? 'none' : `${d}${RANGES[k].unit}`);
     } else {
       ui[k].value = v;
     }
@@ -633,7 +699,7 @@ function wire() {
     if (!ui.sample.value) return;
     try { await takeFile(await takeSample(ui.sample.value), 'sample'); } catch (e) { setStatus(e.message, 'error'); }
   });
-  for (const el of [ui.mode, ui.maxAngle, ui.maxAngleAuto, ui.minAngle, ui.maxArea, ui.maxSteiner]) {
+  for (const el of [ui.mode, ui.maxAngle, ui.maxAngleAuto, ui.minAngle, ui.maxArea, ui.maxEdge, ui.grading, ui.maxSteiner]) {
     el.addEventListener('change', () => { syncOptionInputs(); saveUrl(); });
   }
   // Out-of-range values are said while they are typed, not only when Mesh is pressed.
@@ -644,6 +710,7 @@ function wire() {
   ui.fit.addEventListener('click', () => view.fit());
   ui.showEdges.addEventListener('change', () => { view.showEdges = ui.showEdges.checked; view.requestRender(); });
   ui.showSteiner.addEventListener('change', () => { view.showSteiner = ui.showSteiner.checked; view.requestRender(); });
+  ui.showRegions.addEventListener('change', () => { if (lastResult) paintMesh(); });
   ui.downloads.querySelector('[data-format=png]').addEventListener('click', () => download('png'));
   // Drag and drop anywhere on the page.
   let depth = 0;

@@ -7,8 +7,9 @@ import { CLASSES } from './angles.js';
 const STEINER_COLOR = '#c2185b';
 
 // m: { points, triangles, segments }; cls: class index per triangle; nInput: the input's
-// vertex count (Steiner points follow it).
-export function meshToSvg(m, cls, nInput) {
+// vertex count (Steiner points follow it); fills: [{ color, label }] per class (the largest
+// angle's classes by default, or the regions' colours when the view shows regions).
+export function meshToSvg(m, cls, nInput, fills = CLASSES.map((c) => ({ color: c.color, label: c.label }))) {
   const { points: p, triangles: t, segments: seg } = m;
   let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
   for (let i = 0; i < t.length; i++) {
@@ -21,7 +22,7 @@ export function meshToSvg(m, cls, nInput) {
   // Coordinates relative to the drawing's corner, y flipped, to a 1e-6 share of its size.
   const f = (v) => String(+v.toFixed(Math.max(0, 6 - Math.ceil(Math.log10(size)))));
   const X = (i) => f(p[2 * i] - x0), Y = (i) => f(y1 - p[2 * i + 1]);
-  const byClass = CLASSES.map(() => []);
+  const byClass = fills.map(() => []);
   const edges = [];
   const shortest = new Float64Array(p.length / 2).fill(Infinity);
   for (let k = 0; k < t.length / 3; k++) {
@@ -43,12 +44,18 @@ export function meshToSvg(m, cls, nInput) {
   const w = f(x1 - x0 + 2 * pad), h = f(y1 - y0 + 2 * pad);
   return [
     `<svg xmlns="http://www.w3.org/2000/svg" viewBox="${f(-pad)} ${f(-pad)} ${w} ${h}">`,
-    ...CLASSES.map((c, k) => (byClass[k].length
-      ? `<path data-class="${c.label}" fill="${c.color}" d="${byClass[k].join('')}"/>` : '')).filter(Boolean),
+    ...fills.map((c, k) => (byClass[k].length
+      ? `<path data-class="${xmlAttribute(c.label)}" fill="${c.color}" d="${byClass[k].join('')}"/>` : '')).filter(Boolean),
     `<path fill="none" stroke="#5d6675" stroke-opacity="0.55" stroke-width="${f(line)}" d="${edges.join('')}"/>`,
     `<path fill="none" stroke="#111" stroke-width="${f(3.5 * line)}" stroke-linecap="round" d="${segments.join('')}"/>`,
     `<g fill="${STEINER_COLOR}">${dots.join('')}</g>`,
     '</svg>',
     '',
   ].join('\n');
+}
+
+// A label as an XML attribute value: the class "< 70°" would otherwise make the file
+// malformed (no '<' in an attribute), and an SVG viewer refuse it.
+function xmlAttribute(text) {
+  return String(text).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 }

@@ -23,6 +23,27 @@ export function verdict(r, m, warnings = []) {
   return { text: `${time}: ${missed(r, m, status)}${notes}`, kind: 'warn' };
 }
 
+// The sizes' verdict (stats.sizeRatio: the largest longest-edge / size over the triangles,
+// areas counted as the edge of a square of that area) for the stats: met, or missed by the
+// worst ratio, rounded up so that a miss never reads as 1.00.
+export function sizeWords(ratio) {
+  return ratio <= 1 ? `met (${down2(ratio)})` : `missed (${up2(ratio)})`;
+}
+
+// The same in the status line's words.
+function sizeSentence(r) {
+  if (r.sizeRatio == null) return '';
+  const o = r.options || {};
+  if (r.sizeRatio > 1) {
+    return `Sizes missed: ratio ${up2(r.sizeRatio)} (the worst triangle's size over the one asked for; 1 or less is met).`;
+  }
+  const what = [o.maxEdge > 0 && `every edge at most ${o.maxEdge}`, r.regionAreas && 'every region\'s area bound'].filter(Boolean);
+  return `Sizes met${what.length ? `: ${what.join(', ')}` : ''} (ratio ${down2(r.sizeRatio)}).`;
+}
+
+const down2 = (v) => (Math.trunc(v * 100) / 100).toFixed(2);
+const up2 = (v) => (Math.ceil(v * 100) / 100).toFixed(2);
+
 // The one time figure of a run, as the stats' Time row shows it.
 export function formatMs(ms) {
   if (!Number.isFinite(ms)) return '–';
@@ -46,6 +67,8 @@ function met(r) {
       : `Every angle at least ${o.minAngle}° (smallest ${truncateDeg(r.minAngle, 2)}).`);
   }
   if (o.maxArea > 0 && r.mode !== 'cdt') parts.push(`Every triangle's area at most ${o.maxArea}.`);
+  const sizes = sizeSentence(r);
+  if (sizes) parts.push(sizes);
   return capitalise(parts.join(' '));
 }
 
@@ -66,6 +89,8 @@ function missed(r, m, status) {
   }
   const o = r.options || {};
   if (o.minAngle > 0 || r.mode === 'quality') parts.push(`The smallest angle reached is ${angle(r.minAngle, 2)}${o.minAngle > 0 ? ` (asked: ${o.minAngle}°)` : ''}.`);
+  const sizes = sizeSentence(r);
+  if (sizes) parts.push(sizes);
   return parts.join(' ');
 }
 

@@ -1,5 +1,6 @@
-// The canvas view: a mesh (triangles coloured by their largest angle, edges, input segments,
-// Steiner points) or an input preview, with pan and zoom by wheel, drag, pinch and keys.
+// The canvas view: a mesh (triangles coloured by their largest angle or by their region, edges,
+// input segments, Steiner points) or an input preview, with pan and zoom by wheel, drag, pinch
+// and keys.
 //
 // Geometry is turned into Path2D objects once per mesh, in world coordinates, grouped in tiles
 // of a few thousand triangles (per tile one path per colour class and one of its edges); a
@@ -60,7 +61,9 @@ export class MeshView {
   // A large mesh's paths are built a slice at a time; the picture before it stays until they
   // are ready (dataset.content is 'building' meanwhile, then 'mesh'; dataset.frame is
   // 'drawing' while a frame is drawn in slices, 'done' once it is whole).
-  setMesh(m, cls, nInput) {
+  // cls: per triangle an index into colors (the largest-angle classes by default, or the
+  // regions' palette).
+  setMesh(m, cls, nInput, colors = CLASSES.map((c) => c.color)) {
     const { points: p, triangles: t } = m;
     const seq = ++this.meshSeq;
     this.preview = null;
@@ -68,7 +71,8 @@ export class MeshView {
     this.canvas.dataset.extent = Object.values(boundsOf(p, t)).join(',');
     const build = meshPaths(p, t, cls, m.segments);
     const install = ({ tiles, meanEdge, segments, shortest }) => {
-      this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge, segments, shortest };
+      this.mesh = { points: p, triangles: t, nInput, tiles, meanEdge, segments, shortest, colors };
+      this.canvas.dataset.colors = colors.join(',');
       this.cacheXform = null;
       this.canvas.dataset.frame = 'drawing';  // (until its first frame is whole)
       this.canvas.dataset.content = 'mesh';
@@ -253,9 +257,9 @@ export class MeshView {
       // Only tiles that meet the window: zoomed in, most of a big mesh costs nothing.
       const [wx0, wy1] = this.toWorld(0, 0), [wx1, wy0] = this.toWorld(this.w, this.h);
       const visible = m.tiles.filter((b) => b.x1 >= wx0 && b.x0 <= wx1 && b.y1 >= wy0 && b.y0 <= wy1);
-      CLASSES.forEach((c, k) => {
+      m.colors.forEach((color, k) => {
         for (const tile of visible) {
-          if (tile.paths[k]) ops.push(() => { ctx.fillStyle = c.color; ctx.fill(tile.paths[k]); });
+          if (tile.paths[k]) ops.push(() => { ctx.fillStyle = color; ctx.fill(tile.paths[k]); });
         }
       });
       const edgePx = m.meanEdge * s;

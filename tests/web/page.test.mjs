@@ -177,6 +177,12 @@ test('the page\'s modes, downloads and option defaults are the mesher\'s vocabul
   assert.ok(buttons.every(([, disabled]) => !disabled), 'downloads are enabled once a mesh is shown');
   for (const key of ['maxAngle', 'minAngle', 'maxArea', 'maxSteiner'])
     assert.equal(Number(await page.inputValue(`#${key}`)), defaults[key], `#${key} starts at the mesher's default`);
+  // Max edge and grading start empty, "none", the mesher's 0.
+  for (const key of ['maxEdge', 'grading']) {
+    assert.equal(defaults[key], 0, `the mesher's default ${key}`);
+    assert.equal(await page.inputValue(`#${key}`), '');
+    assert.equal(await page.getAttribute(`#${key}`, 'placeholder'), 'none');
+  }
   const off = await downloadText(page, 'download-off');
   assert.equal(off.name, 'Acute.off');
   assert.match(off.text, /^OFF\n/);

@@ -186,6 +186,10 @@ test('the SVG download is coloured like the view; the histogram\'s grey bars are
   const hex = (rgb) => `#${rgb.match(/\d+/g).map((v) => Number(v).toString(16).padStart(2, '0')).join('')}`;
   for (const f of fills) assert.ok(legend.filter(Boolean).map(hex).includes(f), `${f} is not a legend colour`);
   assert.equal((svg.match(/<circle /g) || []).length, r.steiner, 'one dot per Steiner point');
+  // Well-formed XML (the class "< 70°" escaped in its attribute), so viewers open it.
+  const parseError = await page.evaluate((text) => new DOMParser().parseFromString(text, 'image/svg+xml')
+    .querySelector('parsererror')?.textContent ?? '', svg);
+  assert.equal(parseError, '');
   // The grey of the bars below 60 degrees has its legend entry.
   const small = await page.$eval('#legend .mark-small', (e) => [e.textContent, e.querySelector('i').style.background]);
   assert.match(small[0], /angles < 60°/);
