@@ -190,8 +190,8 @@ def main():
     # The README's solver example, a size file of scattered points, against the plate meshed
     # uniformly at its smallest size: what grading the sizes saves (figures from --stats).
     plate = os.path.join(ROOT, 'tests', 'data', 'plate.poly')
-    for case, args in [('README: --size tests/data/plate.sizes.json (0.5 at the left hole)',
-                        ['--size', os.path.join(ROOT, 'tests', 'data', 'plate.sizes.json')]),
+    for case, args in [('README: --size tests/data/sizes/plate.json --grading 0.2 (0.5 at the left hole)',
+                        ['--size', os.path.join(ROOT, 'tests', 'data', 'sizes', 'plate.json'), '--grading', '0.2']),
                        ('uniform at that smallest size: max edge 0.5', ['--max-edge', '0.5'])]:
         seconds, r = run([CLI, '--mode', 'acute', *args, '--stats', '--threads', '1', '--no-output', plate])
         st = json.loads(r.stdout) if r.stdout.strip() else {}

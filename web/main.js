@@ -460,13 +460,7 @@ function show(am, pslg, input, options, m, wallMs) {
   ui.stats.dataset.runs = String(++runs);
   takeVocabulary(am);
   for (const b of ui.downloads.querySelectorAll('[data-format]')) b.disabled = false;
-  // Grading limits how fast sizes grow; the page's one max edge is the same everywhere and a
-  // region's area bound is not graded, so there is nothing for it to act on: said, not hidden.
-  const notes = [...(s.warnings || [])];
-  if (options.grading > 0 && options.maxEdge > 0) {
-    notes.push(`Grading ${options.grading} changed nothing here: the max edge is the same everywhere and regions' area bounds are not graded (a size that varies, the package's size option, is what it grades).`);
-  }
-  const said = verdict(result, m, notes);
+  const said = verdict(result, m, s.warnings || []);
   setStatus(said.text, said.kind);
   // The first mesh on screen: when the frame that draws it has run.
   if (runs === 1) {

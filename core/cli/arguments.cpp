@@ -297,8 +297,8 @@ std::string usageText() {
                        {x0, y0, dx, dy, nx, ny, h: [nx * ny sizes]} (bilinear) and/or "points"
                        [[x, y, size], ...] (linear between them), or a .node whose first
                        vertex attribute is the size
-  --grading G          sizes from --max-edge and --size grow at most G per unit of distance
-                       (0.2 to 0.5 is usual; default: no limit)
+  --grading G          sizes grow at most G per unit of distance from --max-edge, --size and
+                       the input's small features (0.2 to 0.5 is usual; default: no limit)
   --max-steiner N      give up after adding N points (exit status 1; default 50 per input
                        vertex, at least 20000)
   --fill RULE          which regions form the domain:

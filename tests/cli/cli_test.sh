@@ -390,7 +390,7 @@ check "size .node: every edge within" within_sizes "$work/sized-node.json" "0.05
 printf '2 2 1 0\n1 0 0 0.05\n2 1 0 -1\n' >"$work/bad-sizes.node"
 check "bad size .node" run 2 --size "$work/bad-sizes.node" "$work/A.poly"
 check "bad size .node says" stderr_has "bad-sizes.node: vertex 2: expected a size > 0 (its first attribute), found -1"
-check "README's solver example" run 0 --mode acute --size "$data/plate.sizes.json" --grading 0.2 --stats --format msh -o "$work/plate-sized" "$data/plate.poly"
+check "README's solver example" run 0 --mode acute --size "$data/sizes/plate.json" --grading 0.2 --stats --format msh -o "$work/plate-sized" "$data/plate.poly"
 check "README's solver example: met, certified" stdout_has '"targetMet": true, "certified": true'
 check "README's solver example: .msh" grep -q '^\$MeshFormat' "$work/plate-sized.msh"
 check "grading alone" run 2 --grading 0.3 "$work/A.poly"

@@ -205,6 +205,25 @@ TEST(Sizes, GradingLimitsHowFastSizesGrow) {
   EXPECT_LT(10 * graded.mesh.triangleCount(), plateArea / (std::sqrt(3) / 4 * 0.25));
 }
 
+// With maxEdge alone, grading spreads the input's small features (the airfoil's short edges
+// at its nose and tail): the smaller the grading, the more triangles, every size still met.
+TEST(Sizes, GradingSpreadsSmallFeatures) {
+  const Pslg in = fixtures::load(fixtures::kData + "/naca0012.poly").pslg;
+  size_t previous = 0;
+  for (double grading : {0.0, 0.5, 0.2}) {
+    Options o;
+    o.mode = Mode::Acute;
+    o.maxEdge = 0.5;
+    o.grading = grading;
+    const Result r = mesh(in, o);
+    const std::string what = "grading " + std::to_string(grading);
+    expectMet(in, o, r, what);
+    EXPECT_TRUE(r.stats.warnings.empty()) << what << ": " << r.stats.warnings[0];
+    EXPECT_GT(r.mesh.triangleCount(), previous + previous / 2) << what;
+    previous = r.mesh.triangleCount();
+  }
+}
+
 // Each region's maxArea bounds its own triangles (found by the side of the split at x = 1),
 // with options.maxArea over both; an area function too.
 TEST(Sizes, RegionAndFunctionAreaBounds) {

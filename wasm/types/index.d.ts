@@ -171,7 +171,8 @@ export interface MeshOptions {
   size?: SizeFunction | SizeField;
   /**
    * How fast sizes may grow with distance, |grad size| <= grading (0.2-0.5 is usual; 0: no
-   * limit). Grades maxEdge and size; the sizes the geometry forces grade by themselves.
+   * limit). Grades maxEdge and size away from them and from the input's small features
+   * (each vertex's shortest edge); needs maxEdge or size.
    */
   grading?: number;
   /** Steiner point budget (0: automatic, 50 per input vertex and at least 20000). */

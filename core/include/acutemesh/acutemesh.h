@@ -121,8 +121,9 @@ struct Options {
   double maxEdge = 0.0;           // longest edge allowed (0 = none), in every refinement mode
   SizeField size;                 // edge sizes over the plane (refinement modes)
   // How fast sizes may grow with distance: |grad h| <= grading (JIGSAW's gradient limit;
-  // 0.2-0.5 is usual; 0 = no limit). It limits the size field and maxEdge, not the sizes the
-  // geometry forces (refinement grades those by itself).
+  // 0.2-0.5 is usual; 0 = no limit), from maxEdge, the size field and the domain's own small
+  // features (each vertex's shortest edge in the constrained triangulation). Needs maxEdge or a
+  // size; region area bounds are not graded.
   double grading = 0.0;
   // Fill Mesh::adjacency (twins, neighbours, edges, the boundary loops).
   bool adjacency = false;
