@@ -12,6 +12,7 @@ of 90 or more, and the size ratio (the largest longest-edge / size at the centro
 every edge is within its size). Writes bench/results/sizes-YYYY-MM-DD.md and prints it.
 """
 import datetime
+from fractions import Fraction
 import json
 import math
 import os
@@ -91,6 +92,17 @@ def write_geo(path, points, segments, size_line):
         f.write(size_line)
 
 
+def acute_corner(a, b, c):
+    """The angle at a is below 90: the dot product's sign, exact (the coordinates are doubles,
+    which Fraction holds exactly) where floating point cannot tell."""
+    ux, uy, vx, vy = b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]
+    d = ux * vx + uy * vy
+    if abs(d) > 1e-9 * (abs(ux * vx) + abs(uy * vy)):
+        return d > 0
+    F = [Fraction(float(t)) for t in (a[0], a[1], b[0], b[1], c[0], c[1])]
+    return (F[2] - F[0]) * (F[4] - F[0]) + (F[3] - F[1]) * (F[5] - F[1]) > 0
+
+
 def measure(path, size):
     """Figures of the triangles in a mesh file, sizes measured against size(x, y)."""
     m = meshio.read(path)
@@ -109,9 +121,7 @@ def measure(path, size):
                 cosine = max(-1.0, min(1.0, (b * b + c * c - a * a) / (2 * b * c)))
                 angle = math.degrees(math.acos(cosine))
                 lo, hi = min(lo, angle), max(hi, angle)
-            # An angle of 90 or more, by the sign of the dot product (floating point here).
-            if any((p[(k + 1) % 3][0] - p[k][0]) * (p[(k + 2) % 3][0] - p[k][0]) +
-                   (p[(k + 1) % 3][1] - p[k][1]) * (p[(k + 2) % 3][1] - p[k][1]) <= 0 for k in range(3)):
+            if any(not acute_corner(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) for k in range(3)):
                 non_acute += 1
             cx, cy = sum(q[0] for q in p) / 3, sum(q[1] for q in p) / 3
             worst = max(worst, max(e) / size(cx, cy))
@@ -212,7 +222,7 @@ def main():
              f'acutemesh --threads 1, Gmsh {gmsh_version} -nt 1. `npm run bench:sizes`.', '',
              'Every mesh measured here the same way (meshio reads the .msh files): size ratio = the '
              'largest longest-edge over the size at the centroid (<= 1: every edge within its size); '
-             '"≥ 90°" counts triangles with an angle of 90 or more. Seconds: wall time of the whole '
+             '"≥ 90°" counts triangles with an angle of 90 or more (by the exact sign of a dot product). Seconds: wall time of the whole '
              'command (reading, meshing, writing .msh). The last two rows (the README example '
              'and the uniform mesh it saves) take their figures from --stats.', '']
     for s in skipped:
