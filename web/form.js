@@ -44,3 +44,33 @@ export function checkFields(inputs, out) {
   out.hidden = !messages.length;
   return messages;
 }
+
+// The max edge slider: positions 0..EDGE_STEPS on a logarithmic scale from extent/1000 to
+// extent/4 (the input's larger side), then one more, EDGE_STEPS + 1, meaning none.
+export const EDGE_STEPS = 100;
+export const EDGE_NONE = EDGE_STEPS + 1;
+export const edgeRange = (extent) => ({ lo: extent / 1000, hi: extent / 4 });
+
+// 3 significant digits, written without an exponent where a person would (1230, 0.0123).
+export function roundEdge(v) {
+  return String(Number(v.toPrecision(3)));
+}
+
+// The field's value ('' for none) at slider position `pos`.
+export function edgeAt(pos, extent) {
+  if (pos >= EDGE_NONE) return '';
+  const { lo, hi } = edgeRange(extent);
+  return roundEdge(lo * (hi / lo) ** (pos / EDGE_STEPS));
+}
+
+// The slider position of the field's value: none for empty or 0, clamped to the scale's ends;
+// null for a value that is not a max edge (left where it is).
+export function edgePosition(text, extent) {
+  if (text === '' || text == null) return EDGE_NONE;
+  const v = Number(text);
+  if (!Number.isFinite(v) || v < 0) return null;
+  if (v === 0) return EDGE_NONE;
+  const { lo, hi } = edgeRange(extent);
+  const pos = Math.round(EDGE_STEPS * Math.log(v / lo) / Math.log(hi / lo));
+  return Math.min(EDGE_STEPS, Math.max(0, pos));
+}

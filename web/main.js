@@ -11,7 +11,7 @@ import { drawHistogram, SMALL_ANGLE_COLOR } from './histogram.js';
 import { AUTO, angleFloor, certifiedBound, measureFloor, smallestDomainCorner } from './max-angle.js';
 import { verdict, formatMs, sizeWords } from './verdict.js';
 import { meshToSvg } from './svg-export.js';
-import { RANGES, checkFields, problem } from './form.js';
+import { RANGES, checkFields, problem, edgeAt, edgePosition, edgeRange, roundEdge } from './form.js';
 import { DrawTool, encodeRings, decodeRings } from './draw.js';
 import { parseFont, textToRings, fontName, missingGlyphs } from './loaders/font.js';
 import { loadFile } from './loaders/index.js';
@@ -22,7 +22,7 @@ const ui = {
   text: $('text'), font: $('font'), tolerance: $('tolerance'), sample: $('sample'), file: $('file'),
   draw: $('draw'), drawClose: $('draw-close'), drawClear: $('draw-clear'), source: $('source'),
   mode: $('mode'), maxAngle: $('maxAngle'), maxAngleAuto: $('maxAngleAuto'), angleFloor: $('angleFloor'), minAngle: $('minAngle'), maxArea: $('maxArea'),
-  maxEdge: $('maxEdge'), grading: $('grading'), maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
+  maxEdge: $('maxEdge'), maxEdgeSlider: $('maxEdgeSlider'), grading: $('grading'), maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
   status: $('status'), stats: $('stats'), histogram: $('histogram'), legend: $('legend'),
   view: $('view'), fit: $('fit'), showEdges: $('show-edges'), showSteiner: $('show-steiner'),
   showRegions: $('show-regions'), regionsToggle: $('regions-toggle'),
@@ -48,6 +48,7 @@ const view = new MeshView(ui.view);
 const draw = new DrawTool(view, (rings) => {
   current = { type: 'draw', rings };
   inputChanged();
+  takeExtent({ rings });
   showSource(`drawing: ${rings.length} ring${rings.length === 1 ? '' : 's'}`);
   setStatus(droppedRing, droppedRing ? 'warn' : '');
   droppedRing = '';
@@ -66,6 +67,8 @@ let runs = 0;
 let vocabulary = null;        // the mesher's names and defaults, once it has loaded
 let floorInfo = null;         // the current input's { corner, floor, from: 'input' | 'run' }
 let inputSeq = 0;             // bumped by every input change and run: late previews are dropped
+let extent = null;            // the current input's larger side (the max edge slider's scale)
+let extentUnits = 'units';    // what its numbers are in, for the slider's spoken value
 warmUp();
 const enginePromise = loadEngine();
 enginePromise.then(takeVocabulary, (e) => setStatus(`Could not load the mesher: ${e.message}`, 'error'));
@@ -157,6 +160,7 @@ async function preview() {
     view.setPreview(input.pslg ? { pslg: input.pslg } : { rings: input.rings, fill: input.fill });
     if (current.type !== 'draw') draw.hide();
     view.fit();
+    takeExtent(input);
     showSource(describeInput(input, ' Press Mesh.'));
     const am = await enginePromise.catch(() => null);
     if (am && seq === inputSeq) {
@@ -181,6 +185,7 @@ function inputFailed(e) {
   view.clear();
   draw.hide();
   floorInfo = null;
+  takeExtent(null);
   showFloor();
   const name = current.file ? current.file.name : current.type === 'text' ? `"${ui.text.value}"` : current.type;
   showSource(`${name}: cannot be meshed (the message below says why).${linkNote()}`);
@@ -291,6 +296,7 @@ function syncOptionInputs() {
   ui.maxAngleAuto.disabled = m !== 'acute';
   showFloor();
   for (const el of [ui.minAngle, ui.maxArea, ui.maxEdge, ui.grading, ui.maxSteiner]) el.disabled = m === 'cdt';
+  ui.maxEdgeSlider.disabled = m === 'cdt' || !extent;
   checkFields(FIELDS, ui.formError);
   // An empty input means the mesher's default, which the placeholder shows.
   if (!vocabulary) return;
@@ -303,6 +309,58 @@ function syncOptionInputs() {
   ui.maxEdge.placeholder = d.maxEdge > 0 ? String(d.maxEdge) : 'none';
   ui.grading.placeholder = d.grading > 0 ? String(d.grading) : 'none';
   ui.maxSteiner.placeholder = String(d.maxSteiner);
+}
+
+// ---- the max edge slider ------------------------------------------------------------------
+// A new input sets the slider's scale (extent/1000 to extent/4 of its larger side); the field
+// keeps its value and the slider moves to it.
+function takeExtent(input) {
+  let next = null;
+  if (input) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    const add = (x, y) => { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y); };
+    if (input.pslg) for (let i = 0; i + 1 < input.pslg.points.length; i += 2) add(input.pslg.points[i], input.pslg.points[i + 1]);
+    else for (const ring of input.rings) for (const [x, y] of ring) add(x, y);
+    const side = Math.max(x1 - x0, y1 - y0);
+    if (side > 0 && Number.isFinite(side)) next = side;
+  }
+  extent = next;
+  extentUnits = input?.units || 'units';
+  const s = ui.maxEdgeSlider;
+  if (extent) {
+    const { lo, hi } = edgeRange(extent);
+    s.dataset.min = roundEdge(lo);
+    s.dataset.max = roundEdge(hi);
+  } else {
+    delete s.dataset.min;
+    delete s.dataset.max;
+  }
+  s.disabled = ui.mode.value === 'cdt' || !extent;
+  moveEdgeSlider();
+}
+
+// The field moved the value: the slider follows (a value it cannot show leaves it be).
+function moveEdgeSlider() {
+  if (extent) {
+    const pos = edgePosition(ui.maxEdge.value, extent);
+    if (pos != null) ui.maxEdgeSlider.value = String(pos);
+  }
+  sayEdge();
+}
+
+// The slider's spoken value is the field's: "12.5 km", "0.84 units" or "none".
+function sayEdge() {
+  const v = ui.maxEdge.value;
+  const none = v === '' || Number(v) === 0 || !RANGES.maxEdge.ok(Number(v));
+  ui.maxEdgeSlider.setAttribute('aria-valuetext', none ? 'none' : `${v} ${extentUnits}`);
+}
+
+// The slider moved: the field takes its (rounded) value, and says so as typing would.
+function slideEdge() {
+  if (!extent) return;
+  ui.maxEdge.value = edgeAt(Number(ui.maxEdgeSlider.value), extent);
+  sayEdge();
+  checkFields(FIELDS, ui.formError);
 }
 
 // The floor beside the dial: no mesh of the current input has every angle below it. A bound
@@ -368,6 +426,7 @@ async function run() {
   const t0 = performance.now();
   try {
     const [am, input] = await Promise.all([enginePromise, buildInput(current)]);
+    if (running === controller) takeExtent(input);
     const pslg = input.pslg || am.fromRings(input.rings, { fill: input.fill });
     const options = meshOptions();
     const m = await meshInWorker(pslg, options, {
@@ -696,6 +755,10 @@ function wire() {
   for (const el of [ui.mode, ui.maxAngle, ui.maxAngleAuto, ui.minAngle, ui.maxArea, ui.maxEdge, ui.grading, ui.maxSteiner]) {
     el.addEventListener('change', () => { syncOptionInputs(); saveUrl(); });
   }
+  // The slider writes the field as typing does; the field moves the slider.
+  ui.maxEdgeSlider.addEventListener('input', slideEdge);
+  ui.maxEdgeSlider.addEventListener('change', () => { slideEdge(); syncOptionInputs(); saveUrl(); });
+  ui.maxEdge.addEventListener('input', moveEdgeSlider);
   // Out-of-range values are said while they are typed, not only when Mesh is pressed.
   for (const el of Object.values(FIELDS)) el.addEventListener('input', () => checkFields(FIELDS, ui.formError));
   ui.draw.addEventListener('click', toggleDraw);

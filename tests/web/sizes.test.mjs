@@ -74,6 +74,63 @@ test('max edge: every triangle\'s longest edge within it, the verdict says so, t
   await context.close();
 });
 
+// The slider's position of a max edge: 0..100 from extent/1000 to extent/4, log scale.
+const sliderPos = (v, lo, hi) => Math.round(100 * Math.log(v / lo) / Math.log(hi / lo));
+
+test('the max edge slider: arrows write a rounded max edge the next mesh keeps, typing moves it, a new input rescales it', async () => {
+  const { page, errors, context } = await open('?sample=plate');
+  const slider = '[data-testid=max-edge-slider]';
+  const attrs = () => page.$eval(slider, (s) => ({ value: Number(s.value), min: Number(s.dataset.min), max: Number(s.dataset.max),
+    text: s.getAttribute('aria-valuetext'), label: s.getAttribute('aria-label'), disabled: s.disabled }));
+  let a = await attrs();
+  // The plate is 120 mm wide: the scale runs from 0.12 to 30, then none.
+  assert.deepEqual(a, { value: 101, min: 0.12, max: 30, text: 'none', label: 'Max edge', disabled: false });
+  assert.equal(await page.getByRole('slider', { name: 'Max edge' }).count(), 1);
+
+  await page.focus(slider);
+  for (let i = 0; i < 30; i++) await page.keyboard.press('ArrowLeft');
+  const text = await page.inputValue('[data-testid=max-edge]');
+  const v = Number(text);
+  assert.ok(v >= a.min && v <= a.max, `the slider wrote ${JSON.stringify(text)}, outside ${a.min}..${a.max}`);
+  assert.match(text, /^\d*\.?\d+$/);
+  assert.ok(Number(v.toPrecision(3)) === v, `${text} has more than 3 significant digits`);
+  a = await attrs();
+  assert.equal(a.value, 71);
+  assert.ok(Math.abs(sliderPos(v, a.min, a.max) - a.value) <= 1, `${text} is not at position ${a.value}`);
+  assert.equal(a.text, `${text} units`);
+  assert.equal(new URL(page.url()).searchParams.get('maxEdge'), text, 'the link does not keep the slider\'s value');
+  const r = await runAndWait(page);
+  assert.equal(r.options.maxEdge, v);
+  const worst = Math.max(...await longestEdges(page));
+  assert.ok(worst <= v, `a triangle's longest edge is ${worst} > ${v}`);
+
+  // Typing moves it; an empty field is none, at the right end.
+  await page.fill('[data-testid=max-edge]', '0.5');
+  a = await attrs();
+  assert.equal(a.value, sliderPos(0.5, 0.12, 30));
+  assert.equal(a.text, '0.5 units');
+  await page.fill('[data-testid=max-edge]', '');
+  assert.deepEqual([(await attrs()).value, (await attrs()).text], [101, 'none']);
+
+  // A new input: the scale follows its size, the field keeps its value.
+  await page.fill('[data-testid=max-edge]', '2');
+  await page.fill('[data-testid=text-input]', 'Hi');
+  await page.waitForFunction(() => document.getElementById('maxEdgeSlider').dataset.max !== '30');
+  a = await attrs();
+  assert.equal(await page.inputValue('[data-testid=max-edge]'), '2');
+  assert.ok(a.max > 30 && Math.abs(a.max / a.min - 250) < 1, `the text's scale ${a.min}..${a.max}`);
+  assert.equal(a.value, sliderPos(2, a.min, a.max));
+
+  // Constrained Delaunay: off like the field.
+  await page.selectOption('[data-testid=mode-select]', 'cdt');
+  assert.equal(await page.isDisabled(slider), true);
+  await page.selectOption('[data-testid=mode-select]', 'acute');
+  assert.equal(await page.isDisabled(slider), false);
+  await page.screenshot({ path: join(artifacts, 'sizes-slider.png') });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('max edge and grading: negative or not a number is refused at the field, in a link falls back to none', async () => {
   const { page, errors, context } = await open('?text=Hi&maxEdge=-2&grading=abc');
   const r = await result(page);
@@ -114,6 +171,7 @@ test('max edge and grading: negative or not a number is refused at the field, in
   await page.selectOption('[data-testid=mode-select]', 'cdt');
   assert.equal(await page.isDisabled('[data-testid=max-edge]'), true);
   assert.equal(await page.isDisabled('[data-testid=grading]'), true);
+  assert.equal(await page.isDisabled('[data-testid=max-edge-slider]'), true);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -26,7 +26,7 @@ async function fromJson(text, name, label, am) {
   const { isGeoJson, geoJsonToRings } = await geo();
   if (isGeoJson(obj)) {
     const { rings, projected } = geoJsonToRings(obj);
-    return { kind: 'rings', rings, fill: 'evenodd', label,
+    return { kind: 'rings', rings, fill: 'evenodd', label, units: projected ? 'km' : undefined,
       note: `${obj.type === 'Topology' ? 'TopoJSON' : 'GeoJSON'}: ${rings.length} rings${projected ? ', lon/lat projected (Lambert equal-area, km)' : ''}` };
   }
   // The package reads the mesher's own JSON shapes: a CG:SHOP 2025 instance, a PSLG
