@@ -210,12 +210,14 @@ TEST(Progress, LargeCoastlineMovesSteadilyAndCancels) {
     EXPECT_EQ(fixtures::validationErrors(in, o, r.mesh), "");
     EXPECT_GT(r.mesh.triangleCount(), 8192u);
     double stillSince = 0, still = 0, last = -1, refineFrom = -1;
+    std::string stillAt;  // the phase and fraction of the longest stand
     for (const Report& p : reports) {
       if (!refining(p.phase.c_str())) continue;
       if (refineFrom < 0) refineFrom = stillSince = p.at;
       EXPECT_GE(p.fraction, last) << p.phase << " at " << p.at;
       if (p.fraction > last) stillSince = p.at, last = p.fraction;
-      still = std::max(still, p.at - stillSince);
+      if (p.at - stillSince > still)
+        still = p.at - stillSince, stillAt = p.phase + " at " + std::to_string(p.fraction);
     }
     ASSERT_GE(refineFrom, 0) << "no refinement report";
     const double span = seconds - refineFrom;
@@ -224,7 +226,8 @@ TEST(Progress, LargeCoastlineMovesSteadilyAndCancels) {
       if (refining(p.phase.c_str()) && p.at <= refineFrom + span / 2) halfway = p.fraction;
     RecordProperty(std::string(nameOf(mode)) + "_seconds", std::to_string(seconds));
     EXPECT_LT(still, std::max(0.3, span / 10))
-        << nameOf(mode) << ": the fraction stood still for " << still << " s of " << span;
+        << nameOf(mode) << ": the fraction stood still for " << still << " s of " << span
+        << " (" << stillAt << ")";
     EXPECT_GT(halfway, 0.15) << nameOf(mode) << " (" << span << " s)";
     EXPECT_LT(halfway, 0.85) << nameOf(mode) << " (" << span << " s)";
 

@@ -133,41 +133,45 @@ void Polish::roundInHalves(int r) {
     mine[second][v] = !across;
     along[v] = across;
   }
+  bool helperThread = false;
+#ifdef ACUTEMESH_THREADS
+  helperThread = threadsFor(job_.options) > 1;
+#endif
   RefineState copy = s_;
   RunLimits quiet;  // (its limit is never asked: a round makes no repairs)
   quiet.reportProgress = false;
   Job otherJob = job_;
-  otherJob.limits = &quiet;
+  if (helperThread) otherJob.limits = &quiet;  // (one after the other, both halves report)
   Refiner other(copy, otherJob);
   std::vector<Step> log;
   other.reduce().scope = {&mine[1], &log};
   reduce_.scope = {&mine[0], nullptr};
   auto secondHalf = [&] { other.polisher().round(true); };
-  {
-    const ProgressRelay::Part half(job_.progressRelay(), 0, kCallersHalf);
 #ifdef ACUTEMESH_THREADS
-    if (threadsFor(job_.options) > 1) {
-      std::atomic<bool> done{false};
-      std::thread helper([&] {
-        secondHalf();
-        done = true;
-      });
-      round(true);
-      // (Progress goes on being sent while the other half finishes: a cancel from the
-      // callback lands in time; that half polls the budget itself.)
-      while (!done) {
-        job_.pollProgress();
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-      }
-      helper.join();
-    } else {
-      round(true);
+  if (helperThread) {
+    const ProgressRelay::Part half(job_.progressRelay(), 0, kCallersHalf);
+    std::atomic<bool> done{false};
+    std::thread helper([&] {
       secondHalf();
-    }
-#else
+      done = true;
+    });
     round(true);
-    secondHalf();
+    // (Progress goes on being sent while the other half finishes: a cancel from the
+    // callback lands in time; that half polls the budget itself.)
+    while (!done) {
+      job_.pollProgress();
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    helper.join();
+  }
 #endif
+  if (!helperThread) {
+    {
+      const ProgressRelay::Part half(job_.progressRelay(), 0, kCallersHalf / 2);
+      round(true);
+    }
+    const ProgressRelay::Part half(job_.progressRelay(), kCallersHalf / 2, kCallersHalf);
+    secondHalf();
   }
   reduce_.scope = {};
   {
