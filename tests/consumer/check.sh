@@ -2,6 +2,8 @@
 # Installs acutemesh into a temporary prefix and builds a downstream project against it with
 # find_package(), then builds it again with add_subdirectory(); runs both. The project's
 # program is README.md's C++ example (its first ```cpp block), so that example stays right.
+#
+#   bash tests/consumer/check.sh [BUILD_DIR]
 set -euo pipefail
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 work=$(mktemp -d)
@@ -13,12 +15,17 @@ cp "$src/tests/consumer/CMakeLists.txt" "$work/consumer/"
 awk '/^```cpp$/ { on = 1; next } on && /^```$/ { exit } on' "$src/README.md" >"$work/consumer/main.cpp"
 grep -q 'int main' "$work/consumer/main.cpp" || { echo "consumer: no C++ example in README.md" >&2; exit 1; }
 
-# Built without optimisation: this checks the packaging and the example, not speed, and the
-# core is compiled twice here (-O0 compiles several times faster).
-cmake -S "$src" -B "$work/lib" -DACUTEMESH_TESTS=OFF -DACUTEMESH_CLI=OFF -DCMAKE_BUILD_TYPE=Debug \
-  -DCMAKE_INSTALL_PREFIX="$work/prefix" >/dev/null
-cmake --build "$work/lib" -j"$jobs" >/dev/null
-cmake --install "$work/lib" >/dev/null
+# The installed copy: from the build ctest runs in when given (already built), else built here
+# without optimisation (this checks the packaging and the example, not speed; -O0 compiles
+# several times faster).
+if [[ $# -ge 1 ]]; then
+  cmake --install "$1" --prefix "$work/prefix" >/dev/null
+else
+  cmake -S "$src" -B "$work/lib" -DACUTEMESH_TESTS=OFF -DACUTEMESH_CLI=OFF -DCMAKE_BUILD_TYPE=Debug \
+    -DCMAKE_INSTALL_PREFIX="$work/prefix" >/dev/null
+  cmake --build "$work/lib" -j"$jobs" >/dev/null
+  cmake --install "$work/lib" >/dev/null
+fi
 cmake -S "$work/consumer" -B "$work/installed" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/installed" -j"$jobs" >/dev/null
 "$work/installed/consumer"
