@@ -26,12 +26,13 @@ if ! command -v clang++ >/dev/null 2>&1; then
   echo "fuzz: clang++ is missing (bash scripts/setup.sh installs it)" >&2
   exit 1
 fi
-flags="-g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all"
-if [[ ! -f build-fuzz/CMakeCache.txt ]]; then
-  cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-    -DCMAKE_CXX_FLAGS="$flags" -DACUTEMESH_FUZZ=ON -DACUTEMESH_TESTS=OFF -DACUTEMESH_CLI=OFF \
-    -DACUTEMESH_INSTALL=OFF -DACUTEMESH_WERROR=ON >/dev/null
-fi
+flags="-O1 -gline-tables-only -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined"
+flags+=" -fno-sanitize-recover=all"
+# Configured each time, so that an older build-fuzz/ gets these flags too. (They are the build
+# type's own: in CMAKE_CXX_FLAGS, its -O2 -g would come after them and win.)
+cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_CXX_FLAGS= -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags" -DACUTEMESH_FUZZ=ON \
+  -DACUTEMESH_TESTS=OFF -DACUTEMESH_CLI=OFF -DACUTEMESH_INSTALL=OFF -DACUTEMESH_WERROR=ON >/dev/null
 log=build-fuzz/build.log
 if ! cmake --build build-fuzz -j"$jobs" --target "${harnesses[@]}" >"$log" 2>&1; then
   grep -E "error|Error" "$log" | head -n 30 >&2
