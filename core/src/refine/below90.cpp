@@ -101,7 +101,8 @@ RefineState qualityMesh(const RefineState& from, const Pslg& input, const Option
     CornerFans(start, job).buildAll();
   }
   std::vector<ExactVertex> none;
-  refineWithStrategies(start, input, quality, budget, steinerCap, s, none);
+  refineWithStrategies(start, input, quality, budget, steinerCap, s, none, nullptr,
+                       QualityRun::Start);
   for (size_t v = 0; v < s.role.size(); ++v) {
     if (s.role[v] == kArc) s.role[v] = kFree;
     s.fanCenter[v] = kNone;

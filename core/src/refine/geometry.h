@@ -98,6 +98,16 @@ inline double shortestEdge2(const Triangulation& T, uint32_t t) {
   return std::min({dist2(a, b), dist2(b, c), dist2(c, a)});
 }
 
+// The cosine of a triangle's smallest angle (the one facing its shortest edge), for the
+// skinniest-first repair order.
+inline double smallestAngleCos(const Triangulation& T, uint32_t t) {
+  const uint32_t* v = &T.tri[3 * t];
+  const double *a = T.point(v[0]), *b = T.point(v[1]), *c = T.point(v[2]);
+  double e[3] = {dist2(b, c), dist2(c, a), dist2(a, b)};
+  std::sort(e, e + 3);
+  return (e[1] + e[2] - e[0]) / (2 * std::sqrt(e[1] * e[2]));
+}
+
 // Walks the straight line from the centroid of t to x: the first fixed half-edge it crosses,
 // else kNone with the triangle holding x in `reached` (kNone too if the walk meets a vertex
 // or leaves the triangulation).

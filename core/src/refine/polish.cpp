@@ -21,7 +21,7 @@ constexpr double kCallersHalf = 0.75, kReplayed = 0.83, kAlongRemoved = 0.86;  /
 
 void Polish::run() {
   const Target& target = job_.target;
-  if (!target.boundsLargest() || target.anyMissed(s_)) return;
+  if (!target.countsPoints() || target.anyMissed(s_)) return;
   const size_t inputVertices = job_.input.vertexCount();
   int idleRounds = 0;  // the last rounds in a row that took out no point
   for (int r = 0; r < kPolishRounds && !job_.budget.stop(); ++r) {

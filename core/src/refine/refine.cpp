@@ -89,7 +89,7 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
   const uint32_t half = uint32_t(std::clamp(
       steinerBudget(input, options, sizeDemand(start.T, options)) / 2, 1.0, double(kMaxVertices)));
   RefineOutcome o = refineOnce(start, input, options, budget, half, T, freeVertex, exact);
-  if (o.result.status == Status::Cancelled || budget.stop()) return o.result;
+  if (o.result.ok() || o.result.status == Status::Cancelled || budget.stop()) return o.result;
   Options sure = options;
   // Quality: a run that ended short of the target for lack of points (not for input angles
   // below it, which no point mends) has been wandering.

@@ -12,11 +12,11 @@ StepResult Refiner::run() {
     result = repair_.repairAll();
   }
   const ProgressRelay::Part removals(job_.progressRelay(), kRepairShare, 1);
-  // Acute and non-obtuse, where the point count is the score: remove what is not needed. The
+  // Where the point count is the score (Target::countsPoints): remove what is not needed. The
   // fans have done their work once the target is met: their points may go too, as long as
   // what fills their place meets the target. Putting a vertex back can differ from its old
   // star where vertices are cocircular, so whatever that spoilt is repaired again.
-  if (result.ok() && target.boundsLargest()) {
+  if (result.ok() && target.countsPoints()) {
     s_.releaseChords();
     for (size_t v = 0; v < s_.role.size(); ++v) {
       if (s_.role[v] == kArc) s_.role[v] = kFree;

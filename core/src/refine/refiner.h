@@ -33,9 +33,9 @@ class Refiner {
   Refiner& operator=(const Refiner&) = delete;
 
   // The strategy's steps: cuts at feet and corner fans (acute, non-obtuse), repairs until the
-  // target is met, then (acute, non-obtuse) the Steiner points that are not needed removed.
+  // target is met, then (Target::countsPoints) the Steiner points that are not needed removed.
   StepResult run();
-  // Improvement rounds (acute, non-obtuse; on a mesh that meets the target).
+  // Improvement rounds (Target::countsPoints; on a mesh that meets the target).
   void polish() { polish_.run(); }
   Reduce& reduce() { return reduce_; }
   Insertion& insertion() { return insertion_; }

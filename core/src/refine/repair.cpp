@@ -94,13 +94,16 @@ StepResult Repair::repairAll() {
   RepairQueue& queue = queue_;
   using Order = RepairQueue::Order;
   const bool byGain = job_.strategy.fewestBadFirst && target.boundsLargest() && !target.sized();
+  const bool skinniest = target.countsPoints() && !target.boundsLargest();
   queue.reset(target.sized() ? Order::FactorsOfTwo
-              : byGain            ? Order::FewestBadFirst
-                                  : Order::Largest);
+              : byGain       ? Order::FewestBadFirst
+              : skinniest    ? Order::SkinniestFirst
+                             : Order::Largest);
+  auto key = [&](uint32_t t) { return skinniest ? smallestAngleCos(T, t) : shortestEdge2(T, t); };
   auto push = [&](uint32_t t) {
     if (!T.inDomain(t)) return;
     Corner c = target.worstCorner(s_, t);
-    if (c.k >= 0) queue.push({byGain ? repairGain(t, c) : 0, shortestEdge2(T, t), t});
+    if (c.k >= 0) queue.push({byGain ? repairGain(t, c) : 0, key(t), t});
   };
   const auto stopped = [&]() -> StepResult {
     return {job_.budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
@@ -131,7 +134,7 @@ StepResult Repair::repairAll() {
               "Steiner point budget used up before every triangle met "
               "the target"};
     const uint32_t t = entry.t;
-    if (!T.inDomain(t) || shortestEdge2(T, t) != entry.size) continue;
+    if (!T.inDomain(t) || key(t) != entry.size) continue;
     Corner c = target.worstCorner(s_, t);
     if (c.k < 0) continue;
     size_t weighed = kNotWeighed;

@@ -1,7 +1,10 @@
-// The queue of bad triangles repairs work through, in one of three orders:
-// - largest (squared shortest edge) first, exact (a binary heap on size, then index): acute,
-//   non-obtuse and min-angle refinement come out with the fewest points this way, and the
-//   vertex spacing stays even (newest first instead lets refinement spiral into one spot);
+// The queue of bad triangles repairs work through, in one of four orders:
+// - largest (squared shortest edge) first, exact (a binary heap on size, then index): acute
+//   and non-obtuse refinement come out with the fewest points this way, and the vertex spacing
+//   stays even (newest first instead lets refinement spiral into one spot);
+// - skinniest first (the cosine of the smallest angle, in the same heap): min-angle refinement
+//   without sizes, which then removes what is not needed; its points settle the worst angles
+//   first, and at 40-42 degrees it ends with far fewer points (docs/TUNING.md);
 // - by factors of two, newest first within one (a stack per binary exponent of the size):
 //   with an area bound, where most of the work is area refinement of large meshes; working
 //   near the last insertion keeps the mesh in cache;
@@ -19,10 +22,10 @@ namespace acutemesh::detail {
 
 class RepairQueue {
  public:
-  enum class Order { Largest, FactorsOfTwo, FewestBadFirst };
+  enum class Order { Largest, SkinniestFirst, FactorsOfTwo, FewestBadFirst };
   struct Entry {
     int gain;  // FewestBadFirst only (0 otherwise)
-    double size;
+    double size;  // the squared shortest edge (SkinniestFirst: the smallest angle's cosine)
     uint32_t t;
     bool operator<(const Entry& o) const {
       return gain != o.gain ? gain < o.gain : size != o.size ? size < o.size : t < o.t;

@@ -178,7 +178,7 @@ struct Jobs {
 };
 
 // Progress: the runs of the strategies before the fallbacks, `leading` of them, then the
-// polish (acute, non-obtuse). On large inputs, where progress matters, the polish takes about
+// polish (Target::countsPoints). On large inputs, where progress matters, the polish takes about
 // 70% of the time and the first run nearly all of the runs' (the later ones stop once they
 // have made as many points; the helper threads' do not report). Fallbacks run only when no
 // run met the target, each to its end: they share what is left of the runs' part, `total`
@@ -188,7 +188,7 @@ void progressSpan(const Budget& budget, const Target& target, size_t run, size_t
                   size_t total) {
   ProgressRelay* relay = budget.progress();
   if (!relay) return;
-  const double runs = target.boundsLargest() ? kRunsShare : 1;
+  const double runs = target.countsPoints() ? kRunsShare : 1;
   if (run == kPolishRun) return relay->span(runs, 1);
   if (run >= leading) {
     const double from = std::min(relay->done(), runs);
@@ -306,11 +306,16 @@ class ConcurrentStrategies {
 RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    const Options& options, const Budget& budget,
                                    uint32_t steinerCap, RefineState& out,
-                                   std::vector<ExactVertex>& exact, RefineState* releaseStart) {
+                                   std::vector<ExactVertex>& exact, RefineState* releaseStart,
+                                   QualityRun quality) {
   const ProgressRelay::Scope level(budget.progress());  // (nested: reports no fraction)
   const double demand = sizeDemand(start.T, options);
   const std::vector<Strategy> strategies = strategiesFor(options, demand, start.T.vertexCount());
-  const Target target(options);
+  const Target target = [&] {
+    Target t(options);
+    t.qualityCounts = quality == QualityRun::Mesh;
+    return t;
+  }();
   const Jobs jobs{input, options, target, budget, strategies, smallestEdge2(input)};
   const SteinerLimit limit{start.T.vertexCount(), demand, steinerBudget(input, options, demand)};
   StrategyChoice choice(start, budget, steinerCap);

@@ -14,6 +14,10 @@
 
 namespace acutemesh::detail {
 
+// A quality run for its own mesh, or only as a start for another search (below90.cpp's
+// starts, tuned without the removals and polish that Target::countsPoints brings).
+enum class QualityRun { Mesh, Start };
+
 // What refineWithStrategies leaves.
 struct RefineOutcome {
   bool met = false;      // the best run met the target
@@ -29,7 +33,8 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    const Options& options, const Budget& budget,
                                    uint32_t steinerCap, RefineState& out,
                                    std::vector<ExactVertex>& exact,
-                                   RefineState* releaseStart = nullptr);
+                                   RefineState* releaseStart = nullptr,
+                                   QualityRun quality = QualityRun::Mesh);
 
 // The Steiner points a run may make: Options::maxSteiner, or without a budget from the caller
 // kSteinerPerInputVertex per input vertex, at least kSteinerAtLeast, and with area or size
