@@ -2,6 +2,7 @@
 #include "arguments.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
@@ -33,7 +34,7 @@ std::string choices(const Entry (&table)[N]) {
 bool takesValue(const std::string& a) {
   for (const char* option : {"-o", "--output", "--format", "--mode", "--max-angle", "--min-angle",
                              "--max-area", "--max-edge", "--size", "--grading", "--max-steiner",
-                             "--fill", "--threads", "--time-limit"})
+                             "--fill", "--threads", "--time-limit", "--optimize", "--seed"})
     if (a == option) return true;
   return false;
 }
@@ -47,6 +48,8 @@ std::string missingValue(const std::string& a) {
   if (a == "--max-steiner") return "--max-steiner needs a count";
   if (a == "--threads") return "--threads needs a count";
   if (a == "--time-limit") return "--time-limit needs seconds";
+  if (a == "--optimize") return "--optimize needs seconds";
+  if (a == "--seed") return "--seed needs a number";
   if (a == "--max-angle") return "--max-angle needs a number or auto";
   if (a == "--size") return "--size needs a size file (.json: a grid or points with sizes)";
   return a + " needs a number";
@@ -125,6 +128,18 @@ std::string readValue(const std::string& a, const std::string& v, Arguments& arg
     char* end = nullptr;
     opt.timeLimit = std::strtod(v.c_str(), &end);
     if (*end || !(opt.timeLimit > 0)) return "--time-limit needs a positive number";
+  } else if (a == "--optimize") {
+    char* end = nullptr;
+    opt.optimize = std::strtod(v.c_str(), &end);
+    if (*end || v.empty() || !(opt.optimize >= 0) || opt.optimize > 1e6)
+      return "--optimize needs seconds, 0 to 1000000, not '" + v + "'";
+  } else if (a == "--seed") {
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long x = std::strtoull(v.c_str(), &end, 10);
+    if (*end || v.empty() || v[0] == '-' || errno == ERANGE)
+      return "--seed needs a whole number from 0 to 2^64 - 1, not '" + v + "'";
+    opt.seed = x;
   } else {
     return readBound(a, v, opt);
   }
@@ -313,6 +328,10 @@ std::string usageText() {
                        in the cgshop and json formats, rounded in the others; --stats counts
                        them as exactPoints (default for CG:SHOP input; --no-exact-feet: off)
   --time-limit S       give up after S seconds (exit status 1)
+  --optimize S         after refinement, spend S seconds looking for a mesh with fewer Steiner
+                       points (acute at 90, nonobtuse, quality without sizes): the best mesh
+                       found is kept, never one with more points
+  --seed N             the --optimize search's random choices (default 1)
   --threads N          threads for acute and nonobtuse refinement (default: one per hardware
                        thread; 1: none besides the main one); the mesh is the same for any N
   --stats              print one JSON object of figures on stdout

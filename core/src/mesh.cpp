@@ -514,7 +514,21 @@ std::string checkOptions(const Options& options) {
     return "minAngle must be at least 0 and below 60 degrees";
   if (!(options.maxArea >= 0) || !std::isfinite(options.maxArea))
     return "maxArea must be a finite number >= 0";
+  if (!(options.optimize >= 0) || !std::isfinite(options.optimize))
+    return "optimize must be a finite number of seconds >= 0";
   return detail::checkSizes(options);
+}
+
+// Why Options::optimize's search does not run (null: it does, unless the domain is meshed
+// by parts).
+const char* searchLeftOut(const Options& options, const Options& target, bool refining) {
+  if (!(options.optimize > 0)) return nullptr;
+  if (!refining) return "in a mode that does not refine";
+  if (target.mode == Mode::Acute && target.maxAngle < 90) return "below 90 degrees yet";
+  if (target.mode == Mode::Quality &&
+      (target.maxArea > 0 || target.maxEdge > 0 || !target.size.empty() || target.minAngle == 0))
+    return "on quality meshes with sizes or an area bound";
+  return nullptr;
 }
 
 // Times each phase into Stats::phases and reports its end to Options::progress; the phase
@@ -675,8 +689,13 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
     stats.warnings.push_back("grading has no effect without maxEdge or a size: it limits how fast "
                              "those grow");
   if (belowFloor) target.maxAngle = kAutoMaxAngle;
+  if (const char* why = searchLeftOut(options, target, refining))
+    stats.warnings.push_back(std::string("optimize has no effect ") + why);
   const bool inParts = refining && byParts &&
                        detail::meshByParts(T, inside, input, inputOf, target, budget, result);
+  if (inParts && options.optimize > 0)
+    stats.warnings.push_back("optimize has no effect on a domain meshed by parts (several "
+                             "parts, 4,096 triangles or more) yet");
   if (inParts) {
     clock.end("refine", "output");
   } else if (refining) {

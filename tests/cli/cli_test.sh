@@ -144,6 +144,20 @@ check "quality 44 degrees: exit 1" run 1 --mode quality --min-angle 44 --stats -
 check "quality 44 degrees: says so" stderr_has "a minimum angle of 44 degrees was not reached"
 check "quality 44 degrees: meshed to 40" stderr_has "refined to 40 degrees"
 check "quality 44 degrees: no wandering" bash -c "grep -o '\"steiner\": [0-9]*' '$work/out' | awk '{exit !(\$2 < 1000)}'"
+# --optimize: the search's seconds spent, the mesh certified and no larger than without it.
+steiner_of() { grep -o '"steiner": [0-9]*' "$work/out" | cut -d' ' -f2; }
+check "nonobtuse A.poly" run 0 --mode nonobtuse --stats --no-output "$work/A.poly"
+plain_steiner=$(steiner_of)
+check "--optimize 0.3" run 0 --mode nonobtuse --optimize 0.3 --seed 7 --stats --no-output "$work/A.poly"
+check "--optimize: certified" stdout_has '"certified": true'
+check "--optimize: no more points" bash -c "[[ \$(grep -o '\"steiner\": [0-9]*' '$work/out' | cut -d' ' -f2) -le $plain_steiner ]]"
+check "--optimize: took its time" bash -c "grep -o '\"total\": [0-9.e-]*' '$work/out' | awk '{exit !(\$2 >= 0.3)}'"
+check "--optimize -1: usage error" run 2 --mode nonobtuse --optimize -1 "$work/A.poly"
+check "--optimize -1: says why" stderr_has "--optimize needs seconds, 0 to 1000000, not '-1'"
+check "--seed x: usage error" run 2 --mode nonobtuse --optimize 1 --seed x "$work/A.poly"
+check "--seed x: says why" stderr_has "--seed needs a whole number"
+check "--optimize in cdt: warns" run 0 --optimize 1 --no-output "$work/A.poly"
+check "--optimize in cdt: says so" stderr_has "optimize has no effect in a mode that does not refine"
 check "budget ends early" run 1 --mode acute --max-steiner 5 --stats -o "$work/budget" "$work/A.poly"
 check "budget message" stderr_has "budget"
 check "budget still writes the best mesh" test -s "$work/budget.ele"

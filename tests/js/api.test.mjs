@@ -435,3 +435,28 @@ test('init is memoised; createInstance is not; progress reports', async () => {
   assert.equal(typeof am.version, 'string');
   assert.ok(new AcuteMeshError('BAD_INPUT', 'x') instanceof Error);
 });
+
+// options.optimize: the search takes its seconds and returns a certified mesh with no more
+// Steiner points than refinement's; bad seconds and seeds are bad input naming the option.
+test('optimize spends its time on fewer points and never returns more', () => {
+  const plate = am.parsePoly(readFileSync(join(testData, 'plate.poly'), 'utf8'));
+  const plain = am.mesh(plate, { mode: 'nonobtuse' });
+  const start = performance.now();
+  const m = am.mesh(plate, { mode: 'nonobtuse', optimize: 0.4, seed: 3 });
+  assert.ok(performance.now() - start >= 400, 'the search ended before its time');
+  assert.equal(m.status, 'ok');
+  assert.ok(m.stats.certified && m.stats.targetMet);
+  assert.ok(m.stats.steiner <= plain.stats.steiner, `${m.stats.steiner} > ${plain.stats.steiner}`);
+  assert.equal(m.options.optimize, 0.4);
+  assert.equal(m.options.seed, 3);
+  assert.equal(am.mesh(plate, { mode: 'nonobtuse' }).options.optimize, 0);
+  for (const [options, message] of [
+    [{ optimize: -1 }, /^optimize must be a number of seconds >= 0/],
+    [{ optimize: Infinity }, /^optimize must be a number of seconds >= 0/],
+    [{ seed: 1.5 }, /^seed must be an integer from 0 to 2\^53 - 1/],
+    [{ seed: -2 }, /^seed must be an integer/],
+  ])
+    assert.throws(() => am.mesh(plate, { mode: 'nonobtuse', ...options }),
+      (e) => e.name === 'AcuteMeshError' && message.test(e.message));
+  assert.throws(() => am.mesh(plate, { mode: 'nonobtuse', optimize: '1' }), TypeError);
+});

@@ -368,6 +368,12 @@ function toOptions(options, input, core, where) {
   const timeLimit = numberOption(options, 'timeLimit', defaults.timeLimit);
   if (!(timeLimit >= 0) || timeLimit === Infinity)
     throw badInput(`timeLimit must be a number of seconds >= 0 (0: none), not ${timeLimit}`);
+  const optimize = numberOption(options, 'optimize', defaults.optimize);
+  if (!(optimize >= 0) || optimize === Infinity)
+    throw badInput(`optimize must be a number of seconds >= 0 (0: none), not ${optimize}`);
+  const seed = numberOption(options, 'seed', defaults.seed);
+  if (!Number.isSafeInteger(seed) || seed < 0)
+    throw badInput(`seed must be an integer from 0 to 2^53 - 1, not ${seed}`);
   const flag = (key) => (options[key] === undefined ? defaults[key] : options[key]);
   return {
     mode,
@@ -384,6 +390,8 @@ function toOptions(options, input, core, where) {
     grading: numberOption(options, 'grading', defaults.grading),
     maxSteiner,
     timeLimit,
+    optimize,
+    seed,
     ...(options.size === undefined ? {} : { size: sizeOption(options.size) }),
   };
 }

@@ -180,6 +180,15 @@ export interface MeshOptions {
   /** Seconds (0: none). When it ends, the best mesh so far comes back with stats.targetMet false. */
   timeLimit?: number;
   /**
+   * Seconds to spend after refinement looking for a mesh with fewer Steiner points (0: none):
+   * an anytime search that keeps the best mesh meeting the target and returns it when the time
+   * is up (or at timeLimit), never one with more points. Acute at 90, non-obtuse, and quality
+   * without sizes; on the threads of a native build, one chain in WebAssembly.
+   */
+  optimize?: number;
+  /** The optimize search's random choices (default 1): the same seed, the same tries. */
+  seed?: number;
+  /**
    * Also return how the triangles connect (MeshResult.halfedges, neighbors, edges, edgeMarkers,
    * hull, hullStarts). Default false.
    */
@@ -226,6 +235,8 @@ export interface ResolvedOptions {
   maxSteiner: number;
   timeLimit: number;
   adjacency: boolean;
+  optimize: number;
+  seed: number;
 }
 
 export interface MeshStats {

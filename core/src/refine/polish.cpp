@@ -50,6 +50,55 @@ void Polish::run() {
   }
 }
 
+void Polish::search(double seconds, uint64_t seed) {
+  const Target& target = job_.target;
+  if (!target.countsPoints() || target.anyMissed(s_)) return;
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  ProgressRelay* relay = job_.progressRelay();
+  const size_t inputVertices = job_.input.vertexCount();
+  RefineState best = s_;
+  size_t fewest = s_.liveSteiner(inputVertices);
+  uint64_t x = (seed + 1) * 0x9E3779B97F4A7C15ull;  // xorshift64: the same tries everywhere
+  auto random = [&] {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    return double(x >> 11) * 0x1p-53;
+  };
+  std::vector<uint32_t> ring;
+  while (elapsed() < seconds && !job_.budget.stop()) {
+    if (relay) relay->note("improve", elapsed() / seconds, s_.T.vertexCount());
+    for (uint32_t v = uint32_t(inputVertices); v < s_.T.vertexCount(); ++v) {
+      if (s_.T.vertexEdge[v] == kNone || s_.role[v] != kFree || random() >= kSearchKick) continue;
+      ring.clear();
+      uint32_t e0 = s_.T.vertexEdge[v], e = e0;
+      do {
+        ring.push_back(s_.T.tri[next(e)]);
+        e = s_.T.opp[prev(e)];
+      } while (e != e0);
+      const uint32_t w = ring[std::min(ring.size() - 1, size_t(random() * double(ring.size())))];
+      if (w == kGhost) continue;
+      const double f = kSearchStep[0] + (kSearchStep[1] - kSearchStep[0]) * random();
+      const double *p = s_.P(v), *q = s_.P(w);
+      const double to[2] = {p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1])};
+      relocation_.tryMoveTo(v, to);
+    }
+    bool met = true;
+    for (int r = 0; r < kSearchRounds && met; ++r) {
+      round(false);
+      met = repair_.repairAll().ok() && !target.anyMissed(s_);
+    }
+    const size_t count = s_.liveSteiner(inputVertices);
+    if (met && count < fewest) {
+      best = s_, fewest = count;
+    } else if (!met || count > fewest) {
+      s_ = best;
+    }
+  }
+  s_ = std::move(best);
+}
+
 // Smoothing makes the room removals and merges need: a sweep before each removal and merge
 // step. Small meshes: two sweeps before the removals (a sweep moves each vertex against its
 // neighbours' old places, the second settles most of that), and two merge passes. Larger ones

@@ -27,6 +27,12 @@ class Polish {
   // One round: smoothing, removals, merges. removeAfterMerging: the larger meshes' round (see
   // polish.cpp).
   void round(bool removeAfterMerging);
+  // Options::optimize's search, on a mesh that meets the target, until `seconds` have passed
+  // or the budget stops it: each try kicks some free Steiner points (part of the way to a
+  // neighbour, where their stars still meet the target; chosen by `seed`), then makes
+  // kSearchRounds rounds; a try that ends with fewer points is kept, one with more is undone.
+  // The mesh left is the best found: never more points than it started with.
+  void search(double seconds, uint64_t seed);
 
  private:
   void smooth();

@@ -77,7 +77,9 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
     // refinements it runs.
     const ProgressRelay::Scope level(budget.progress());
     RefineState best;
-    StepResult result = refineBelow90(start, input, options, budget, best, exact);
+    Options below = options;
+    below.optimize = 0;  // (its refinements are starts and steps of the descent)
+    StepResult result = refineBelow90(start, input, below, budget, best, exact);
     best.markFree(freeVertex);
     T = std::move(best.T);
     return result;

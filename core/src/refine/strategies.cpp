@@ -184,6 +184,8 @@ struct Jobs {
 // run met the target, each to its end: they share what is left of the runs' part, `total`
 // runs in all.
 constexpr double kRunsShare = 0.3, kFirstRunShare = 0.8;
+// With Options::optimize, the polish's share of what is left; the search has the rest.
+constexpr double kPolishBeforeSearch = 0.3;
 void progressSpan(const Budget& budget, const Target& target, size_t run, size_t leading,
                   size_t total) {
   ProgressRelay* relay = budget.progress();
@@ -301,6 +303,44 @@ class ConcurrentStrategies {
 };
 #endif
 
+// Options::optimize: Polish::search on the best run's mesh, and on as many copies as there are
+// threads to spare, each chain with its own seed; the fewest points win (the first chain on a
+// tie). Only the calling thread's chain reports progress.
+void searchFewerPoints(StrategyRun& best, const Jobs& jobs) {
+  const Options& options = jobs.options;
+  size_t chains = 1;
+#ifdef ACUTEMESH_THREADS
+  chains = std::max(1u, threadsFor(options));
+#endif
+  std::vector<RefineState> copies(chains - 1, best.state());
+  std::vector<RunLimits> limits(chains - 1, best.limits());
+  std::vector<Job> copyJobs;
+  std::vector<std::unique_ptr<Refiner>> refiners;
+  for (size_t i = 1; i < chains; ++i) {
+    limits[i - 1].reportProgress = false;
+    copyJobs.push_back(jobs(0));
+  }
+  for (size_t i = 1; i < chains; ++i) {
+    copyJobs[i - 1].limits = &limits[i - 1];
+    refiners.push_back(std::make_unique<Refiner>(copies[i - 1], copyJobs[i - 1]));
+  }
+  auto chain = [&](size_t i) {
+    Refiner& refiner = i == 0 ? best.refiner() : *refiners[i - 1];
+    refiner.polisher().search(options.optimize, options.seed + i);
+  };
+#ifdef ACUTEMESH_THREADS
+  std::vector<std::thread> helpers;
+  for (size_t i = 1; i < chains; ++i) helpers.emplace_back(chain, i);
+  chain(0);
+  for (std::thread& helper : helpers) helper.join();
+#else
+  chain(0);
+#endif
+  const size_t inputVertices = jobs.input.vertexCount();
+  for (RefineState& copy : copies)
+    if (copy.liveSteiner(inputVertices) < best.liveSteiner()) best.state() = std::move(copy);
+}
+
 }  // namespace
 
 RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
@@ -341,7 +381,16 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   if (releaseStart) *releaseStart = RefineState{};
   StrategyRun& best = choice.best;
   progressSpan(budget, target, kPolishRun, leading, strategies.size());
-  if (best.met) best.refiner().polish();
+  const bool search = best.met && options.optimize > 0 && quality == QualityRun::Mesh &&
+                      target.countsPoints() && !target.strictMax;
+  {
+    const ProgressRelay::Part part(budget.progress(), 0, search ? kPolishBeforeSearch : 1);
+    if (best.met) best.refiner().polish();
+  }
+  if (search) {
+    const ProgressRelay::Part part(budget.progress(), kPolishBeforeSearch, 1);
+    searchFewerPoints(best, jobs);
+  }
   RefineOutcome outcome;
   outcome.met = best.met;
   outcome.result = best.result;

@@ -1,0 +1,158 @@
+// Options::optimize, the anytime search for fewer Steiner points after refinement: whatever
+// stops it (its time, the time limit, a cancel), the mesh returned is valid, meets the target,
+// is certified where the mode certifies, and has no more Steiner points than refinement made.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "acutemesh/acutemesh.h"
+#include "acutemesh/io.h"
+#include "fixtures.h"
+
+using namespace acutemesh;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+struct Case {
+  std::string file;
+  Mode mode;
+  double minAngle;
+};
+
+std::string name(const Case& c) {
+  return c.file + (c.mode == Mode::Acute       ? " acute"
+                   : c.mode == Mode::NonObtuse ? " nonobtuse"
+                                               : " quality " + std::to_string(c.minAngle));
+}
+
+Options optionsFor(const Case& c) {
+  Options o;
+  o.mode = c.mode;
+  o.minAngle = c.minAngle;
+  return o;
+}
+
+void expectGood(const Pslg& in, const Options& o, const Result& r, const std::string& what) {
+  EXPECT_EQ(fixtures::validationErrors(in, o, r.mesh), "") << what;
+  EXPECT_TRUE(r.stats.targetMet) << what;
+  if (o.mode != Mode::Quality) EXPECT_TRUE(r.stats.certified) << what;
+  if (o.mode == Mode::Quality) EXPECT_GE(r.stats.minAngle, o.minAngle) << what;
+}
+
+const Case kCases[] = {
+    {"A.poly", Mode::NonObtuse, 0},
+    {"A.poly", Mode::Acute, 0},
+    {"plate.poly", Mode::NonObtuse, 0},
+    {"plate.poly", Mode::Quality, 34},
+    {"cgshop/simple-polygon_40_synthetic.instance.json", Mode::NonObtuse, 0},
+    {"cgshop/point-set_60_synthetic.instance.json", Mode::Acute, 0},
+};
+
+}  // namespace
+
+// Given its time, the search ends there with a mesh no larger than refinement's, and smaller
+// on the whole (the kicks and rounds find something).
+TEST(Optimize, NeverMorePointsAndFewerInAll) {
+  size_t before = 0, after = 0;
+  for (const Case& c : kCases) {
+    const Input in = fixtures::load(fixtures::kData + "/" + c.file);
+    Options o = optionsFor(c);
+    applyInputPolicy(in, {}, o);
+    const Result base = mesh(in.pslg, o);
+    ASSERT_EQ(base.status, Status::Ok) << name(c) << ": " << base.message;
+    o.optimize = 0.4;
+    const Clock::time_point start = Clock::now();
+    const Result r = mesh(in.pslg, o);
+    const double seconds = since(start);
+    ASSERT_EQ(r.status, Status::Ok) << name(c) << ": " << r.message;
+    expectGood(in.pslg, o, r, name(c));
+    EXPECT_LE(r.stats.steiner, base.stats.steiner) << name(c);
+    EXPECT_GE(seconds, 0.4) << name(c) << ": the search ended before its time";
+    EXPECT_LT(seconds, 0.4 + 2 * base.stats.seconds + 1) << name(c);
+    before += base.stats.steiner, after += r.stats.steiner;
+  }
+  EXPECT_LT(after, before);
+}
+
+// A cancel in the middle of the search returns at once with the best mesh found so far, which
+// meets the target and is no larger than refinement's.
+TEST(Optimize, CancelInTheMiddleReturnsTheBestMesh) {
+  const Case c = kCases[2];
+  const Input in = fixtures::load(fixtures::kData + "/" + c.file);
+  Options o = optionsFor(c);
+  const Result base = mesh(in.pslg, o);
+  ASSERT_EQ(base.status, Status::Ok) << base.message;
+  std::atomic<bool> cancel{false};
+  o.optimize = 30;
+  o.cancel = &cancel;
+  const Clock::time_point start = Clock::now();
+  double asked = -1;
+  o.progress = [&](const Progress& p) {
+    if (asked < 0 && std::string(p.phase) == "improve" && since(start) > base.stats.seconds + 0.5) {
+      asked = since(start);
+      cancel = true;
+    }
+  };
+  const Result r = mesh(in.pslg, o);
+  const double ended = since(start);
+  ASSERT_GE(asked, 0) << "no cancel was asked for";
+  EXPECT_EQ(r.status, Status::Cancelled) << r.message;
+  EXPECT_LT(ended - asked, 0.5) << "asked at " << asked << " s, ended at " << ended;
+  expectGood(in.pslg, o, r, "cancelled");
+  EXPECT_LE(r.stats.steiner, base.stats.steiner);
+}
+
+// The time limit ends the search as it ends refinement: the best mesh so far, meeting the target.
+TEST(Optimize, TimeLimitEndsTheSearch) {
+  const Case c = kCases[4];
+  const Input in = fixtures::load(fixtures::kData + "/" + c.file);
+  Options o = optionsFor(c);
+  applyInputPolicy(in, {}, o);
+  const Result base = mesh(in.pslg, o);
+  ASSERT_EQ(base.status, Status::Ok) << base.message;
+  o.optimize = 60;
+  o.timeLimit = base.stats.seconds + 0.5;
+  const Clock::time_point start = Clock::now();
+  const Result r = mesh(in.pslg, o);
+  EXPECT_LT(since(start), o.timeLimit + 1);
+  expectGood(in.pslg, o, r, "time limit");
+  EXPECT_LE(r.stats.steiner, base.stats.steiner);
+}
+
+// Where the search does not run, mesh() says so; a bad value is bad input.
+TEST(Optimize, SaysWhereItDoesNotRunAndRejectsBadSeconds) {
+  const Input in = fixtures::load(fixtures::kData + "/A.poly");
+  auto warnedOf = [](const Result& r) {
+    for (const std::string& w : r.stats.warnings)
+      if (w.find("optimize has no effect") != std::string::npos) return true;
+    return false;
+  };
+  Options o;
+  o.optimize = 0.2;
+  o.mode = Mode::Cdt;
+  EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
+  o.mode = Mode::Acute;
+  o.maxAngle = 85;
+  EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
+  o.mode = Mode::Quality;
+  o.maxAngle = 90;
+  o.maxArea = 0.01;
+  EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
+  o.mode = Mode::NonObtuse;
+  o.maxArea = 0;
+  EXPECT_FALSE(warnedOf(mesh(in.pslg, o)));
+  for (double bad : {-1.0, std::nan(""), HUGE_VAL}) {
+    o.optimize = bad;
+    const Result r = mesh(in.pslg, o);
+    EXPECT_EQ(r.status, Status::BadInput) << bad;
+    EXPECT_NE(r.message.find("optimize must be"), std::string::npos) << r.message;
+  }
+}
