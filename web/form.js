@@ -11,6 +11,8 @@ export const RANGES = {
   grading: { label: 'Grading', unit: '', ok: (v) => v >= 0, words: '0 (none) or more', why: '0.2 to 0.5 is usual' },
   maxSteiner: { label: 'Steiner budget', unit: '', ok: (v) => v >= 0 && Number.isInteger(v),
     words: 'a whole number, 0 (automatic) or more' },
+  optimize: { label: 'Spend more time', unit: ' s', ok: (v) => v >= 0 && v <= 600,
+    words: 'from 0 (none) to 600 seconds', why: 'looking for a mesh with fewer points after refinement' },
   tolerance: { label: 'Tolerance', unit: '‰', ok: (v) => v >= 0.1 && v <= 100, words: 'from 0.1 to 100' },
 };
 

@@ -22,7 +22,7 @@ const ui = {
   text: $('text'), font: $('font'), tolerance: $('tolerance'), sample: $('sample'), file: $('file'),
   draw: $('draw'), drawClose: $('draw-close'), drawClear: $('draw-clear'), source: $('source'),
   mode: $('mode'), maxAngle: $('maxAngle'), maxAngleAuto: $('maxAngleAuto'), angleFloor: $('angleFloor'), minAngle: $('minAngle'), maxArea: $('maxArea'),
-  maxEdge: $('maxEdge'), maxEdgeSlider: $('maxEdgeSlider'), grading: $('grading'), maxSteiner: $('maxSteiner'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
+  maxEdge: $('maxEdge'), maxEdgeSlider: $('maxEdgeSlider'), grading: $('grading'), maxSteiner: $('maxSteiner'), optimize: $('optimize'), run: $('run'), cancel: $('cancel'), progress: $('progress'),
   status: $('status'), stats: $('stats'), histogram: $('histogram'), legend: $('legend'),
   view: $('view'), fit: $('fit'), showEdges: $('show-edges'), showSteiner: $('show-steiner'),
   showRegions: $('show-regions'), regionsToggle: $('regions-toggle'),
@@ -30,7 +30,7 @@ const ui = {
 };
 // The number fields checked against their ranges (form.js) before a run.
 const FIELDS = { maxAngle: ui.maxAngle, minAngle: ui.minAngle, maxArea: ui.maxArea, maxEdge: ui.maxEdge, grading: ui.grading,
-  maxSteiner: ui.maxSteiner, tolerance: ui.tolerance };
+  maxSteiner: ui.maxSteiner, optimize: ui.optimize, tolerance: ui.tolerance };
 
 const BUNDLED_FONTS = {
   'pagella-regular': 'fonts/texgyrepagella-regular.otf',
@@ -39,7 +39,7 @@ const BUNDLED_FONTS = {
 // What the option inputs hold when the URL says nothing: the page's mode, and otherwise the
 // mesher's defaults (vocabulary.defaults; tests/web checks that they agree). Max edge and
 // grading start empty: none (the mesher's 0).
-const OPTION_DEFAULTS = { mode: 'acute', maxAngle: '90', minAngle: '0', maxArea: '0', maxEdge: '', grading: '', maxSteiner: '0' };
+const OPTION_DEFAULTS = { mode: 'acute', maxAngle: '90', minAngle: '0', maxArea: '0', maxEdge: '', grading: '', maxSteiner: '0', optimize: '' };
 // The samples: maps are GeoJSON, the others name their file.
 const SAMPLE_FILES = { gear: 'samples/gear.svg', plate: 'samples/plate.poly' };
 const TEXT_DEFAULTS = { text: 'Acute', font: 'pagella-regular', tol: '5' };
@@ -282,6 +282,7 @@ function meshOptions() {
     if (num(ui.maxEdge) > 0) o.maxEdge = num(ui.maxEdge);
     if (num(ui.grading) > 0) o.grading = num(ui.grading);
     if (num(ui.maxSteiner) > 0) o.maxSteiner = Math.round(num(ui.maxSteiner));
+    if (num(ui.optimize) > 0) o.optimize = num(ui.optimize);
   }
   return o;
 }
@@ -295,7 +296,7 @@ function syncOptionInputs() {
   ui.maxAngle.disabled = m !== 'acute' || autoChosen();
   ui.maxAngleAuto.disabled = m !== 'acute';
   showFloor();
-  for (const el of [ui.minAngle, ui.maxArea, ui.maxEdge, ui.grading, ui.maxSteiner]) el.disabled = m === 'cdt';
+  for (const el of [ui.minAngle, ui.maxArea, ui.maxEdge, ui.grading, ui.maxSteiner, ui.optimize]) el.disabled = m === 'cdt';
   ui.maxEdgeSlider.disabled = m === 'cdt' || !extent;
   checkFields(FIELDS, ui.formError);
   // An empty input means the mesher's default, which the placeholder shows.
@@ -309,6 +310,7 @@ function syncOptionInputs() {
   ui.maxEdge.placeholder = d.maxEdge > 0 ? String(d.maxEdge) : 'none';
   ui.grading.placeholder = d.grading > 0 ? String(d.grading) : 'none';
   ui.maxSteiner.placeholder = String(d.maxSteiner);
+  ui.optimize.placeholder = 'none';
 }
 
 // ---- the max edge slider ------------------------------------------------------------------
@@ -752,7 +754,7 @@ function wire() {
     if (!ui.sample.value) return;
     try { await takeFile(await takeSample(ui.sample.value), 'sample'); } catch (e) { setStatus(e.message, 'error'); }
   });
-  for (const el of [ui.mode, ui.maxAngle, ui.maxAngleAuto, ui.minAngle, ui.maxArea, ui.maxEdge, ui.grading, ui.maxSteiner]) {
+  for (const el of [ui.mode, ui.maxAngle, ui.maxAngleAuto, ui.minAngle, ui.maxArea, ui.maxEdge, ui.grading, ui.maxSteiner, ui.optimize]) {
     el.addEventListener('change', () => { syncOptionInputs(); saveUrl(); });
   }
   // The slider writes the field as typing does; the field moves the slider.

@@ -241,3 +241,29 @@ test('the regions sample: one colour per region, a legend that says so, area bou
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+// "Spend more time" (the mesher's optimize): its seconds go to the mesher and are spent, the
+// mesh is certified and no larger than without them, the link keeps them, and out of range is
+// refused at the field.
+test('spend more time: the seconds go to the mesher, the mesh no larger, the link keeps them', async () => {
+  const { page, errors, context } = await open('?sample=plate&mode=nonobtuse');
+  const plain = await result(page);
+  assert.equal(plain.certified, true);
+  await page.fill('[data-testid=optimize]', '1');
+  await page.dispatchEvent('[data-testid=optimize]', 'change');
+  assert.equal(new URL(page.url()).searchParams.get('optimize'), '1');
+  const r = await runAndWait(page);
+  assert.deepEqual(r.options, { mode: 'nonobtuse', optimize: 1 });
+  assert.equal(r.certified, true);
+  assert.ok(r.milliseconds >= 1000, `the search ended after ${r.milliseconds} ms, before its second`);
+  assert.ok(r.steiner <= plain.steiner, `${r.steiner} Steiner points, ${plain.steiner} without the search`);
+
+  await page.fill('[data-testid=optimize]', '-3');
+  await page.dispatchEvent('[data-testid=optimize]', 'input');
+  assert.equal(await page.getAttribute('[data-testid=optimize]', 'aria-invalid'), 'true');
+  assert.match(await page.textContent('[data-testid=form-error]'), /^Spend more time -3 s is out of range: it must be from 0 \(none\) to 600 seconds/);
+  await page.selectOption('[data-testid=mode-select]', 'cdt');
+  assert.equal(await page.isDisabled('[data-testid=optimize]'), true);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
