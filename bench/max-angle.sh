@@ -29,6 +29,8 @@
 # even when many runs use their whole time limit.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+# shellcheck source=bench/cgshop-select.sh
+source bench/cgshop-select.sh
 
 QUICK=0
 for a in "$@"; do
@@ -96,20 +98,7 @@ cgshop_dir=""
 : >"$WORK/cgshop-selected.txt"
 if [[ -d "$SHARED/cgshop2025" ]]; then
   cgshop_dir="$SHARED/cgshop2025"
-  for f in "$cgshop_dir"/*.instance.json; do
-    b="$(basename "$f" .instance.json)"
-    printf '%s\t%s\t%s\n' "${b%_*_*}" "$(echo "$b" | awk -F_ '{print $(NF-1)}')" "$f"
-  done | sort -k1,1 -k2,2n -k3,3 | awk -F'\t' -v k="$PER_CATEGORY" '
-    { cat[NR] = $1; line[NR] = $0; n[$1]++ }
-    END {
-      for (i = 1; i <= NR; i++) {
-        c = cat[i]; j = seen[c]++;
-        if (k == "all" || n[c] <= k) { print line[i]; continue }
-        if (k == 1) { if (j == int((n[c] - 1) / 2)) print line[i]; continue }
-        # keep rank j when it is the nearest to one of k evenly spaced ranks
-        for (m = 0; m < k; m++) if (j == int(m * (n[c] - 1) / (k - 1) + 0.5)) { print line[i]; break }
-      }
-    }' >"$WORK/cgshop-selected.txt"
+  select_cgshop "$cgshop_dir" "$PER_CATEGORY" >"$WORK/cgshop-selected.txt"
 else
   note "skipped: the CG:SHOP 2025 instances (needs the reference data: set ACUTEMESH_DATA, or put it at ../shared/data)"
 fi

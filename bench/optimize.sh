@@ -32,6 +32,8 @@
 # 10 instances x 2 modes x 11.1 s plus the refinement and the checks: some 4 minutes.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+# shellcheck source=bench/cgshop-select.sh
+source bench/cgshop-select.sh
 
 if (($#)); then
   echo "usage: [OPTIMIZE_SECONDS=\"0 0.1 1 10\"] [OPTIMIZE_PER_CATEGORY=2|all] bash bench/optimize.sh" >&2
@@ -89,20 +91,7 @@ fi
 # --- inputs -----------------------------------------------------------------------------------
 # Per category, PER_CATEGORY instances spread evenly over the category's sizes (max-angle.sh's
 # selection): category, size, file.
-for f in "$cgshop_dir"/*.instance.json; do
-  b="$(basename "$f" .instance.json)"
-  printf '%s\t%s\t%s\n' "${b%_*_*}" "$(echo "$b" | awk -F_ '{print $(NF-1)}')" "$f"
-done | sort -k1,1 -k2,2n -k3,3 | awk -F'\t' -v k="$PER_CATEGORY" '
-  { cat[NR] = $1; line[NR] = $0; n[$1]++ }
-  END {
-    for (i = 1; i <= NR; i++) {
-      c = cat[i]; j = seen[c]++;
-      if (k == "all" || n[c] <= k) { print line[i]; continue }
-      if (k == 1) { if (j == int((n[c] - 1) / 2)) print line[i]; continue }
-      # keep rank j when it is the nearest to one of k evenly spaced ranks
-      for (m = 0; m < k; m++) if (j == int(m * (n[c] - 1) / (k - 1) + 0.5)) { print line[i]; break }
-    }
-  }' >"$WORK/selected.txt"
+select_cgshop "$cgshop_dir" "$PER_CATEGORY" >"$WORK/selected.txt"
 
 # --- measuring --------------------------------------------------------------------------------
 load_start=$(cut -d' ' -f1-3 /proc/loadavg)
