@@ -178,7 +178,7 @@ if [[ -n "$acute_bin" && -x "$acute_bin" ]]; then
       cp "$file" "$dir/"
       rc=0
       start_ns=$(date +%s%N)
-      (cd "$dir" && timeout $((2 * TIME_LIMIT + 10)) "$acute_bin" -Q -pq20U"$b" "$(basename "$file")" \
+      (cd "$dir" && timeout $((2 * TIME_LIMIT + 10)) "$acute_bin" -Qpq20U"$b" "$(basename "$file")" \
         >stdout.txt 2>stderr.txt </dev/null) || rc=$?
       echo "$rc $(( ($(date +%s%N) - start_ns) / 1000000 ))" >"$dir/rc"
     done
