@@ -29,8 +29,8 @@
 # even when many runs use their whole time limit.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-# shellcheck source=bench/cgshop-select.sh
-source bench/cgshop-select.sh
+# shellcheck source=bench/common.sh
+source bench/common.sh
 
 QUICK=0
 for a in "$@"; do
@@ -55,18 +55,7 @@ rm -rf "$RUNDIR"
 mkdir -p "$RUNDIR/cgshop"
 
 # --- build ------------------------------------------------------------------------------------
-jobs="$(nproc)"
-if [[ ! -f build/CMakeCache.txt || ! ( -f build/Makefile || -f build/build.ninja ) ]]; then
-  note "configuring and building build/ (scripts/build.sh)"
-  bash scripts/build.sh >build/bench-max-angle.log 2>&1 ||
-    cmake --build build --target acutemesh -j"$jobs" >>build/bench-max-angle.log 2>&1 || true
-else
-  cmake --build build --target acutemesh -j"$jobs" >build/bench-max-angle.log 2>&1 || true
-fi
-if [[ ! -x build/acutemesh ]]; then
-  note "our CLI did not build (see build/bench-max-angle.log)"
-  exit 1
-fi
+build_cli bench-max-angle
 
 # --- inputs -----------------------------------------------------------------------------------
 # id | label | file | extra CLI arguments

@@ -32,8 +32,8 @@
 # 10 instances x 2 modes x 11.1 s plus the refinement and the checks: some 4 minutes.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-# shellcheck source=bench/cgshop-select.sh
-source bench/cgshop-select.sh
+# shellcheck source=bench/common.sh
+source bench/common.sh
 
 if (($#)); then
   echo "usage: [OPTIMIZE_SECONDS=\"0 0.1 1 10\"] [OPTIMIZE_PER_CATEGORY=2|all] bash bench/optimize.sh" >&2
@@ -69,19 +69,10 @@ rm -rf "$RUNDIR"
 mkdir -p "$RUNDIR"
 
 # --- build ------------------------------------------------------------------------------------
-jobs="$(nproc)"
 if [[ "$BUILD" == 0 ]]; then
   note "OPTIMIZE_BUILD=0: running build/acutemesh as it is"
-elif [[ ! -f build/CMakeCache.txt || ! ( -f build/Makefile || -f build/build.ninja ) ]]; then
-  note "configuring and building build/ (scripts/build.sh)"
-  bash scripts/build.sh >build/bench-optimize.log 2>&1 ||
-    cmake --build build --target acutemesh -j"$jobs" >>build/bench-optimize.log 2>&1 || true
 else
-  cmake --build build --target acutemesh -j"$jobs" >build/bench-optimize.log 2>&1 || true
-fi
-if [[ ! -x build/acutemesh ]]; then
-  note "our CLI did not build (see build/bench-optimize.log)"
-  exit 1
+  build_cli bench-optimize
 fi
 if ! ./build/acutemesh --help 2>/dev/null | grep -q -- '--optimize'; then
   note "this CLI has no --optimize (build/acutemesh --help): nothing to measure"

@@ -36,8 +36,8 @@
 # run takes a few minutes on 2 cores, more when runs hit their limits.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-# shellcheck source=bench/cgshop-select.sh
-source bench/cgshop-select.sh
+# shellcheck source=bench/common.sh
+source bench/common.sh
 
 QUICK=0
 for a in "$@"; do
@@ -69,18 +69,7 @@ rm -rf "$RUNDIR" "$CONV"
 mkdir -p "$RUNDIR" "$CONV"
 
 # --- build ------------------------------------------------------------------------------------
-jobs="$(nproc)"
-if [[ ! -f build/CMakeCache.txt || ! ( -f build/Makefile || -f build/build.ninja ) ]]; then
-  note "configuring and building build/ (scripts/build.sh)"
-  bash scripts/build.sh >build/bench-quality.log 2>&1 ||
-    cmake --build build --target acutemesh -j"$jobs" >>build/bench-quality.log 2>&1 || true
-else
-  cmake --build build --target acutemesh -j"$jobs" >build/bench-quality.log 2>&1 || true
-fi
-if [[ ! -x build/acutemesh ]]; then
-  note "our CLI did not build (see build/bench-quality.log)"
-  exit 1
-fi
+build_cli bench-quality
 
 # --- inputs -----------------------------------------------------------------------------------
 # id | label | group (issue, held) | file | the file converted from (JSON), or nothing

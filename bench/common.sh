@@ -1,4 +1,24 @@
-# Sourced by the bench scripts that run a share of the CG:SHOP 2025 instances.
+# What the bench scripts share; sourced by them (each defines note(), its own way of saying things).
+
+# build_cli NAME: our CLI in build/: configured and built by scripts/build.sh the first time,
+# else just the acutemesh target; the log in build/NAME.log. Exits when there is no CLI.
+build_cli() {
+  local log="build/$1.log" jobs
+  jobs="$(nproc)"
+  mkdir -p build
+  if [[ ! -f build/CMakeCache.txt || ! ( -f build/Makefile || -f build/build.ninja ) ]]; then
+    note "configuring and building build/ (scripts/build.sh)"
+    bash scripts/build.sh >"$log" 2>&1 ||
+      cmake --build build --target acutemesh -j"$jobs" >>"$log" 2>&1 || true
+  else
+    cmake --build build --target acutemesh -j"$jobs" >"$log" 2>&1 || true
+  fi
+  if [[ ! -x build/acutemesh ]]; then
+    note "our CLI did not build (see $log)"
+    exit 1
+  fi
+}
+
 # select_cgshop DIR K: per category (the name before _SIZE_HASH), K of DIR's instances spread
 # evenly over the category's sizes (K = 1: the middle one; "all": every one), as lines of
 # category, size and file, tab-separated, sorted by category and size.
