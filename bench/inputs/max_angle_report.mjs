@@ -12,7 +12,7 @@ import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-import { cpu, opt, readRun, readText, sh } from './runs.mjs';
+import { cpu, opt, readRun, readText, readTriangleOutput, sh } from './runs.mjs';
 
 const work = opt('--work');
 const cgshopDir = opt('--cgshop') || '';
@@ -123,30 +123,6 @@ function acuteRows(c, nInput) {
   return rows;
 }
 
-// Triangle's FILE.1.node / FILE.1.ele in dir: vertex count and the largest angle (floating point).
-function readTriangleOutput(dir) {
-  const files = readdirSync(dir);
-  const node = files.find((f) => f.endsWith('.1.node'));
-  const ele = files.find((f) => f.endsWith('.1.ele'));
-  if (!node || !ele) return null;
-  const rows = (f) => readFileSync(path.join(dir, f), 'utf8').split('\n').map((l) => l.replace(/#.*/, '').trim()).filter(Boolean)
-    .map((l) => l.split(/\s+/).map(Number));
-  const nodes = rows(node), eles = rows(ele);
-  const pts = new Map(nodes.slice(1).map((r) => [r[0], [r[1], r[2]]]));
-  let max = 0, nonAcute = 0;
-  for (const r of eles.slice(1)) {
-    const [a, b, c] = [pts.get(r[1]), pts.get(r[2]), pts.get(r[3])];
-    if (!a || !b || !c) continue;
-    let worst = 0;
-    for (const [p, q, s] of [[a, b, c], [b, c, a], [c, a, b]]) {
-      const ux = q[0] - p[0], uy = q[1] - p[1], vx = s[0] - p[0], vy = s[1] - p[1];
-      worst = Math.max(worst, Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy) * (180 / Math.PI));
-    }
-    if (worst >= 90) nonAcute++;
-    max = Math.max(max, worst);
-  }
-  return { vertices: nodes[0][0], max, nonAcute };
-}
 
 const inputSections = [];
 for (const c of cases) {

@@ -12,7 +12,7 @@ import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-import { cpu, opt, readRun, readText, sh } from './runs.mjs';
+import { cpu, opt, readRun, readText, readTriangleOutput, sh, triangleRows } from './runs.mjs';
 
 const work = opt('--work');
 const out = opt('--out');
@@ -67,16 +67,13 @@ const cases = lines(path.join(work, 'cases.txt')).map((l) => {
 const skipped = lines(path.join(work, 'skipped.txt'));
 const converted = new Map(lines(path.join(work, 'converted.txt')).map((l) => l.split('|')));
 
-// Triangle-format rows of a file: comments and blank lines dropped, numbers.
-const rowsOf = (f) => readFileSync(f, 'utf8').split('\n').map((l) => l.replace(/#.*/, '').trim()).filter(Boolean)
-  .map((l) => l.split(/\s+/).map(Number));
 // The vertices of a .poly / .node file (a .poly with 0 vertices has them in the .node beside it).
 function inputVertices(file) {
   if (!existsSync(file)) return null;
-  const n = rowsOf(file)[0]?.[0];
+  const n = triangleRows(file)[0]?.[0];
   if (n === 0 && file.endsWith('.poly')) {
     const node = file.replace(/\.poly$/, '.node');
-    return existsSync(node) ? rowsOf(node)[0]?.[0] ?? null : null;
+    return existsSync(node) ? triangleRows(node)[0]?.[0] ?? null : null;
   }
   return n ?? null;
 }
@@ -113,26 +110,6 @@ function ours(id, a) {
 }
 
 // --- aCute's runs --------------------------------------------------------------------------------
-// Triangle's FILE.1.node / FILE.1.ele in dir: vertices, triangles, the smallest angle (doubles).
-function readTriangleOutput(dir) {
-  const files = readdirSync(dir);
-  const node = files.find((f) => f.endsWith('.1.node'));
-  const ele = files.find((f) => f.endsWith('.1.ele'));
-  if (!node || !ele) return null;
-  const nodes = rowsOf(path.join(dir, node)), eles = rowsOf(path.join(dir, ele));
-  const pts = new Map(nodes.slice(1).map((r) => [r[0], [r[1], r[2]]]));
-  let min = Infinity, triangles = 0;
-  for (const r of eles.slice(1)) {
-    const [a, b, c] = [pts.get(r[1]), pts.get(r[2]), pts.get(r[3])];
-    if (!a || !b || !c) continue;
-    triangles++;
-    for (const [p, q, s] of [[a, b, c], [b, c, a], [c, a, b]]) {
-      const ux = q[0] - p[0], uy = q[1] - p[1], vx = s[0] - p[0], vy = s[1] - p[1];
-      min = Math.min(min, Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy) * (180 / Math.PI));
-    }
-  }
-  return { vertices: nodes[0][0], triangles, min };
-}
 
 // { steiner, min, ms (best of the runs that exited 0), runs, met, short, detail }
 function acute(c, a) {
