@@ -44,6 +44,7 @@ class Repair {
   // them and nothing has changed the mesh since; kNotWeighed otherwise.
   bool repair(uint32_t t, Corner c, size_t weighed = kNotWeighed);
   int repairGain(uint32_t t, Corner c, size_t* weighed = nullptr);
+  bool acrossSmallInputAngle(uint32_t t) const;
 
   RefineState& s_;
   const Job& job_;
