@@ -110,8 +110,8 @@ bool Repair::acrossSmallInputAngle(uint32_t t) const {
   const double* u = &in.points[2 * size_t(apex == a0 ? a1 : a0)];
   const double* w = &in.points[2 * size_t(apex == b0 ? b1 : b0)];
   const double ux = u[0] - a[0], uy = u[1] - a[1], wx = w[0] - a[0], wy = w[1] - a[1];
-  if (!(ux * wx + uy * wy > job_.target.cosMin * std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy))))
-    return false;
+  const double lengths = std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
+  if (!(ux * wx + uy * wy > job_.target.cosMin * lengths)) return false;
   // And t lies in that narrow wedge (not around the corner, where the angle is wide).
   const uint32_t* v = &T.tri[3 * t];
   const double c[2] = {(s_.P(v[0])[0] + s_.P(v[1])[0] + s_.P(v[2])[0]) / 3 - a[0],
