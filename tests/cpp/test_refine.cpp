@@ -173,7 +173,8 @@ TEST(Refine, QualityHasFewerPointsThanACute) {
 // them. A skinny triangle whose shortest edge joins two segments meeting at a small input
 // angle is left (Shewchuk's rule): before it, the 20-degree wedge took 108 Steiner points and
 // the polygon with 6-degree corners 13,441 (budget nearly out), for as many triangles left
-// under the angle as now.
+// under the angle as now. The removal and polish then run as on a mesh that meets the target
+// (the polygon: 325 points without them, 289 with).
 TEST(Refine, QualityLeavesSmallInputAnglesAlone) {
   struct Case {
     std::string file;
@@ -181,7 +182,7 @@ TEST(Refine, QualityLeavesSmallInputAnglesAlone) {
   };
   for (const Case& c : {Case{kData + "/angles/wedge-20.poly", 10, 2},
                         Case{kSyntheticCgshop + "/simple-polygon-exterior_150_synthetic.instance.json",
-                             1000, 80}}) {
+                             300, 80}}) {
     Pslg in = load(c.file);
     Options o;
     o.mode = Mode::Quality;

@@ -21,7 +21,7 @@ constexpr double kCallersHalf = 0.75, kReplayed = 0.83, kAlongRemoved = 0.86;  /
 
 void Polish::run() {
   const Target& target = job_.target;
-  if (!target.countsPoints() || target.anyMissed(s_)) return;
+  if (!target.countsPoints() || repair_.missesBeyondLeft()) return;
   const size_t inputVertices = job_.input.vertexCount();
   int idleRounds = 0;  // the last rounds in a row that took out no point
   for (int r = 0; r < kPolishRounds && !job_.budget.stop(); ++r) {
@@ -36,7 +36,7 @@ void Polish::run() {
       round(false);
     StepResult result = repair_.repairAll();
     size_t after = s_.liveSteiner(inputVertices);
-    if (!result.ok() || target.anyMissed(s_) || after > before) {
+    if (!result.ok() || repair_.missesBeyondLeft() || after > before) {
       s_ = std::move(saved);
       return;
     }
@@ -52,7 +52,7 @@ void Polish::run() {
 
 void Polish::search(double seconds, uint64_t seed) {
   const Target& target = job_.target;
-  if (!target.countsPoints() || target.anyMissed(s_)) return;
+  if (!target.countsPoints() || repair_.missesBeyondLeft()) return;
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -87,7 +87,7 @@ void Polish::search(double seconds, uint64_t seed) {
     bool met = true;
     for (int r = 0; r < kSearchRounds && met; ++r) {
       round(false);
-      met = repair_.repairAll().ok() && !target.anyMissed(s_);
+      met = repair_.repairAll().ok() && !repair_.missesBeyondLeft();
     }
     const size_t count = s_.liveSteiner(inputVertices);
     if (met && count < fewest) {

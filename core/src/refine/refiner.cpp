@@ -22,7 +22,7 @@ StepResult Refiner::run() {
       if (s_.role[v] == kArc) s_.role[v] = kFree;
       s_.fanCenter[v] = kNone;
     }
-    if (!target.anyMissed(s_)) reduce_.removeSteinerPoints();
+    if (!repair_.missesBeyondLeft()) reduce_.removeSteinerPoints();
     result = repair_.repairAll();
   }
   s_.releaseChords();  // (when a budget cut the run short)

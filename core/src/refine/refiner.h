@@ -41,6 +41,7 @@ class Refiner {
   Insertion& insertion() { return insertion_; }
   Boundary& boundary() { return boundary_; }
   Polish& polisher() { return polish_; }
+  Repair& repairs() { return repair_; }
 
  private:
   RefineState& s_;

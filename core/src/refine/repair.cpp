@@ -120,6 +120,17 @@ bool Repair::acrossSmallInputAngle(uint32_t t) const {
   return (ux * c[1] - uy * c[0]) * turn > 0 && (c[0] * wy - c[1] * wx) * turn > 0;
 }
 
+bool Repair::missesBeyondLeft() const {
+  const Target& target = job_.target;
+  for (uint32_t t = 0; t < s_.T.triangleSlots(); ++t) {
+    if (!s_.T.inDomain(t)) continue;
+    const Corner c = target.worstCorner(s_, t);
+    if (c.k < 0) continue;
+    if (c.large || c.area || !target.qualityCounts || !acrossSmallInputAngle(t)) return true;
+  }
+  return false;
+}
+
 // The gain of repairing t (whose worst corner is c) for the FewestBadFirst order: the bad
 // triangles the best of its slice's points that spares the segments would take away, less
 // those it would make, at least -1 (also where no point counts); 1 for a subsegment split and

@@ -38,13 +38,18 @@ class Repair {
   // changes is left too.
   StepResult repairAll();
 
+  // Some triangle of the domain misses the target, other than those left at small input angles
+  // (acrossSmallInputAngle): what refinement and the improvement rounds must not leave.
+  bool missesBeyondLeft() const;
+  // A skinny triangle refinement leaves: see repair.cpp.
+  bool acrossSmallInputAngle(uint32_t t) const;
+
  private:
   static constexpr size_t kNotWeighed = SIZE_MAX;
   // weighed: repairGain's choice among t's candidates (in candidates_), if it has just weighed
   // them and nothing has changed the mesh since; kNotWeighed otherwise.
   bool repair(uint32_t t, Corner c, size_t weighed = kNotWeighed);
   int repairGain(uint32_t t, Corner c, size_t* weighed = nullptr);
-  bool acrossSmallInputAngle(uint32_t t) const;
 
   RefineState& s_;
   const Job& job_;

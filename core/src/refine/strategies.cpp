@@ -381,11 +381,15 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   if (releaseStart) *releaseStart = RefineState{};
   StrategyRun& best = choice.best;
   progressSpan(budget, target, kPolishRun, leading, strategies.size());
-  const bool search = best.met && options.optimize > 0 && quality == QualityRun::Mesh &&
+  // (Quality: also where all that misses the target are the triangles left at small input
+  // angles.)
+  const bool settled =
+      best.met || (best.result.ok() && !best.refiner().repairs().missesBeyondLeft());
+  const bool search = settled && options.optimize > 0 && quality == QualityRun::Mesh &&
                       target.countsPoints() && !target.strictMax;
   {
     const ProgressRelay::Part part(budget.progress(), 0, search ? kPolishBeforeSearch : 1);
-    if (best.met) best.refiner().polish();
+    if (settled) best.refiner().polish();
   }
   if (search) {
     const ProgressRelay::Part part(budget.progress(), kPolishBeforeSearch, 1);
