@@ -64,6 +64,10 @@ async function handle(req, res) {
     'Content-Length': stat.size,
     // Development server: always revalidate, so a rebuild shows up on reload.
     'Cache-Control': 'no-cache',
+    // Cross-origin isolation: the page may share memory with its mesh worker, which lets a
+    // cancel during "spend more time" keep the best mesh found (wasm/js/worker-client.js).
+    'Cross-Origin-Opener-Policy': 'same-origin',
+    'Cross-Origin-Embedder-Policy': 'require-corp',
   });
   if (req.method === 'HEAD') res.end();
   else createReadStream(path).pipe(res);

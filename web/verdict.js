@@ -20,6 +20,9 @@ export function verdict(r, m, warnings = []) {
     return { text: `${time}: no triangles${status === 'ok' ? '' : ` (status '${status}')`}: ${why.join('; ') || 'the domain is empty'}.`, kind: 'error' };
   }
   if (status === 'ok' && r.targetMet !== false) return { text: `${time}: ${met(r)}${notes}`, kind: '' };
+  // Cancelled while spending more time: the best mesh found, which meets the target.
+  if (status === 'cancelled' && r.targetMet === true)
+    return { text: `${time}: the search for fewer points was cancelled; the best mesh it found is shown, ${uncapitalise(met(r))}${notes}`, kind: '' };
   return { text: `${time}: ${missed(r, m, status)}${notes}`, kind: 'warn' };
 }
 

@@ -460,3 +460,32 @@ test('optimize spends its time on fewer points and never returns more', () => {
       (e) => e.name === 'AcuteMeshError' && message.test(e.message));
   assert.throws(() => am.mesh(plate, { mode: 'nonobtuse', optimize: '1' }), TypeError);
 });
+
+// The anytime contract: a cancel while optimize searches returns the best mesh so far (status
+// 'cancelled', certified, meets the target, no more Steiner points than refinement's) long
+// before the time asked for; a cancel before the search has a mesh still rejects.
+test('a cancel during optimize returns the best mesh so far; before it, an AbortError', () => {
+  const plate = am.parsePoly(readFileSync(join(testData, 'plate.poly'), 'utf8'));
+  const plain = am.mesh(plate, { mode: 'nonobtuse' });
+  const c = new AbortController();
+  let improving = 0;
+  const start = performance.now();
+  const m = am.mesh(plate, {
+    mode: 'nonobtuse', optimize: 60, signal: c.signal,
+    // A few reports into the search, so that it has tried something.
+    onProgress: (p) => { if (p.phase === 'improve' && ++improving === 3) c.abort(); },
+  });
+  assert.ok(performance.now() - start < 30000, 'the cancel did not stop the search');
+  assert.ok(c.signal.aborted);
+  assert.equal(m.status, 'cancelled');
+  assert.ok(m.stats.certified && m.stats.targetMet);
+  assert.ok(am.validate(plate, m).ok);
+  assert.ok(m.stats.steiner <= plain.stats.steiner, `${m.stats.steiner} > ${plain.stats.steiner}`);
+
+  const reason = new Error('stop');
+  const early = new AbortController();
+  assert.throws(() => am.mesh(plate, {
+    mode: 'nonobtuse', optimize: 60, signal: early.signal,
+    onProgress: (p) => { if (p.phase === 'domain') early.abort(reason); },  // before refinement
+  }), (e) => e === reason);
+});

@@ -95,6 +95,38 @@ test('abort terminates the busy worker promptly; the next call gets a fresh one'
   }
 });
 
+// optimize in a worker: an abort while the search runs reaches the worker through shared
+// memory (Node has SharedArrayBuffer), which answers with the best mesh so far; an abort before
+// the search still rejects with the signal's reason; the worker stays usable.
+test('abort during optimize answers with the best mesh so far', { timeout: 120000 }, async () => {
+  const worker = createMeshWorker();
+  try {
+    const plain = am.mesh(pslg, { mode: 'nonobtuse' });
+    const controller = new AbortController();
+    const t0 = performance.now();
+    const m = await worker.mesh(pslg, {
+      mode: 'nonobtuse', optimize: 60, signal: controller.signal,
+      onProgress: (p) => { if (p.phase === 'improve' && !controller.signal.aborted) controller.abort(); },
+    });
+    assert.ok(performance.now() - t0 < 30000, 'the abort did not stop the search');
+    assert.equal(m.status, 'cancelled');
+    assert.ok(m.stats.certified && m.stats.targetMet);
+    assert.ok(am.validate(pslg, m).ok);
+    assert.ok(m.stats.steiner <= plain.stats.steiner, `${m.stats.steiner} > ${plain.stats.steiner}`);
+
+    // (The slow job's refinement takes a second or more: the abort comes before its end.)
+    const reason = new Error('user cancelled');
+    const early = new AbortController();
+    await assert.rejects(worker.mesh(square, {
+      ...slow, optimize: 60, signal: early.signal,
+      onProgress: (p) => { if (p.phase === 'refine') early.abort(reason); },
+    }), (e) => e === reason);
+    assert.ok((await worker.mesh(square, { mode: 'acute' })).stats.certified);
+  } finally {
+    worker.terminate();
+  }
+});
+
 test('an exception in onProgress rejects the call; the next queued call still runs', { timeout: 120000 }, async () => {
   const worker = createMeshWorker();
   try {

@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { artifacts, pageSession, result, runAndWait, status } from './browser.mjs';
+import { artifacts, pageSession, result, runAndWait, status, waitForRun } from './browser.mjs';
 import { join } from 'node:path';
 
 const { open } = pageSession();
@@ -264,6 +264,33 @@ test('spend more time: the seconds go to the mesher, the mesh no larger, the lin
   assert.match(await page.textContent('[data-testid=form-error]'), /^Spend more time -3 s is out of range: it must be from 0 \(none\) to 600 seconds/);
   await page.selectOption('[data-testid=mode-select]', 'cdt');
   assert.equal(await page.isDisabled('[data-testid=optimize]'), true);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+// Cancel while spending more time keeps the best mesh the search has found: the page is
+// cross-origin isolated (scripts/serve.mjs), so the worker hears the cancel through shared
+// memory and answers with that mesh, certified and no larger than without the search.
+test('cancel during "spend more time" shows the best mesh found', async () => {
+  const { page, errors, context } = await open('?sample=plate&mode=nonobtuse');
+  const plain = await result(page);
+  assert.equal(await page.evaluate(() => globalThis.crossOriginIsolated), true);
+  await page.fill('[data-testid=optimize]', '120');
+  await page.dispatchEvent('[data-testid=optimize]', 'change');
+  const before = Number(await page.getAttribute('[data-testid=stats]', 'data-runs'));
+  const t0 = Date.now();
+  await page.click('[data-testid=run-button]');
+  await page.waitForFunction(() => /improve/.test(document.getElementById('status').textContent), null, { timeout: 30000 });
+  await page.click('[data-testid=cancel-button]');
+  const r = await waitForRun(page, before + 1, 10000);
+  assert.ok(Date.now() - t0 < 60000, 'the cancel did not end the search');
+  assert.equal(r.status, 'cancelled');
+  assert.equal(r.certified, true);
+  assert.ok(r.steiner <= plain.steiner, `${r.steiner} Steiner points, ${plain.steiner} without the search`);
+  const line = await status(page);
+  assert.match(line.text, /the search for fewer points was cancelled; the best mesh it found is shown, certified non-obtuse/);
+  assert.equal(line.kind, '');
+  assert.equal(await page.isDisabled('[data-testid=cancel-button]'), true);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -709,7 +709,9 @@ function makeApi(factory, compiled, memoryLimit, M) {
         { ...opts, size: sizes.size }, progress.callback));
       progress.rethrow();
       sizes.rethrow();
-      if (r.status === 'cancelled') throw abortError(signal);
+      // A cancel while optimize searches (anytime) keeps the best mesh so far, which meets the
+      // target: it is the answer, with status 'cancelled'. Any other cancel has no answer.
+      if (r.status === 'cancelled' && !(opts.optimize > 0 && r.stats.targetMet)) throw abortError(signal);
       if (r.status === 'bad-input') throw badInput(r.message);
       const result = {
         points: r.points,

@@ -5,13 +5,19 @@
 // keeps the process alive only while a job runs). `resolveUrl(url)` makes the URLs a user
 // gives absolute, relative to the page (browsers) or the working directory (Node).
 //
-// Cancellation: a worker busy in mesh() runs synchronous wasm and reads no messages, and
-// sharing a flag with it would need SharedArrayBuffer (cross-origin isolation in browsers).
-// So aborting terminates the worker, rejects the call with the signal's reason (an AbortError
+// Cancellation: a worker busy in mesh() runs synchronous wasm and reads no messages. So
+// aborting terminates the worker, rejects the call with the signal's reason (an AbortError
 // by default), and the next call starts a fresh worker. Works everywhere, costs one worker
-// start (tens of milliseconds) after an abort.
+// start (tens of milliseconds) after an abort. A job with optimize is the exception where
+// SharedArrayBuffer exists (Node; browsers on a cross-origin isolated page): its abort sets a
+// flag the worker's mesh() reads as its signal, so a cancel while the search runs still
+// answers with the best mesh so far (api.js); a worker that has not answered kCancelGraceMs
+// later is terminated.
 import { AcuteMeshError } from './api.js';
 import { checkKeys, MESH_OPTION_KEYS, INIT_OPTION_KEYS } from './keys.js';
+
+const kCancelGraceMs = 1000;
+const canShareFlag = () => typeof SharedArrayBuffer === 'function' && globalThis.crossOriginIsolated !== false;
 
 function abortReason(signal) {
   return signal.reason !== undefined ? signal.reason : new DOMException('The operation was aborted', 'AbortError');
@@ -63,7 +69,8 @@ class MeshWorker {
       } else if (message.type === 'result') {
         this.finish(job, message.mesh, null);
       } else if (message.type === 'error') {
-        this.finish(job, null, rebuildError(message.error));
+        const error = rebuildError(message.error);
+        this.finish(job, null, job.aborted && error.name === 'AbortError' ? job.aborted : error);
       }
     });
     w.onError((error) => {
@@ -93,7 +100,8 @@ class MeshWorker {
     try {
       const w = this.ensureWorker();
       w.busy(true);
-      w.post({ id: job.id, pslg: job.pslg, options: job.options, initOptions: this.initOptions });
+      w.post({ id: job.id, pslg: job.pslg, options: job.options, initOptions: this.initOptions,
+        cancelFlag: job.cancelFlag });
     } catch (e) {
       // No worker (the platform refused one), or input that cannot be cloned (functions,
       // say): this job fails, the queue goes on.
@@ -127,6 +135,9 @@ class MeshWorker {
       const job = {
         id: this.nextId++, pslg, options: { ...rest, progress: onProgress !== undefined },
         resolve, reject, onProgress, cleanup: () => {},
+        cancelFlag: signal && options.optimize > 0 && canShareFlag()
+          ? new Int32Array(new SharedArrayBuffer(4)) : undefined,
+        aborted: null,  // the signal's reason, once the flag is set
       };
       if (signal) this.cancelOnAbort(job, signal);
       this.queue.push(job);
@@ -134,21 +145,34 @@ class MeshWorker {
     });
   }
 
-  // An abort takes a waiting job off the queue, or stops the worker running it.
+  // An abort takes a waiting job off the queue, or stops the worker running it (through its
+  // flag first, where it has one).
   cancelOnAbort(job, signal) {
+    let grace;
+    const stop = () => {
+      if (this.active !== job) return;
+      this.stopWorker();
+      this.finish(job, null, abortReason(signal));
+    };
     const onAbort = () => {
       const i = this.queue.indexOf(job);
       if (i >= 0) {
         this.queue.splice(i, 1);
         job.cleanup();
         job.reject(abortReason(signal));
-      } else if (this.active === job) {
-        this.stopWorker();
-        this.finish(job, null, abortReason(signal));
+      } else if (this.active === job && job.cancelFlag) {
+        job.aborted = abortReason(signal);
+        Atomics.store(job.cancelFlag, 0, 1);
+        grace = setTimeout(stop, kCancelGraceMs);
+      } else {
+        stop();
       }
     };
     signal.addEventListener('abort', onAbort, { once: true });
-    job.cleanup = () => signal.removeEventListener('abort', onAbort);
+    job.cleanup = () => {
+      signal.removeEventListener('abort', onAbort);
+      clearTimeout(grace);
+    };
   }
 
   terminate() {

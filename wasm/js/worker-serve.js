@@ -4,10 +4,12 @@
 export function serve(init, post, listen) {
   let api = null;
   listen(async (message) => {
-    const { id, pslg, options, initOptions } = message;
+    const { id, pslg, options, initOptions, cancelFlag } = message;
     try {
       if (!api) api = await init(initOptions);
       const opts = { ...options };
+      // The caller's abort, through memory both threads see (worker-client.js).
+      if (cancelFlag) opts.signal = { get aborted() { return Atomics.load(cancelFlag, 0) !== 0; } };
       if (options.progress) {
         opts.onProgress = (p) => post({ id, type: 'progress', progress: p });
       }
