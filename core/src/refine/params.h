@@ -73,11 +73,14 @@ constexpr double kYieldRatio = 4, kYield = 0.2;
 // --- Polish -------------------------------------------------------------------------------
 // Improvement rounds at most, and removal passes per removal step at most.
 constexpr int kPolishRounds = 12, kRemovalPasses = 12;
-// Options::optimize's search (Polish::search): the share of free Steiner points a try kicks,
-// how far each goes toward a random neighbour (a share of the edge, from and to), and the
-// rounds after the kick.
+// Options::optimize's search (Polish::search): the share of tries that ruin rather than kick;
+// a kick's share of free Steiner points, and how far each goes toward a random neighbour (a
+// share of the edge, from and to); a ruin's share of free Steiner points taken out, and the
+// chance each of their free neighbours goes with them; the rounds after either.
+constexpr double kSearchRuin = 0.75;
 constexpr double kSearchKick = 0.3;
 constexpr double kSearchStep[2] = {0.05, 0.45};
+constexpr double kRuinShare = 0.02, kRuinNeighbour = 0.5;
 constexpr int kSearchRounds = 3;
 // A round must take out this fraction of the Steiner points for another to run ...
 constexpr double kPolishGain = 0.005;

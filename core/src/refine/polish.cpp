@@ -66,17 +66,21 @@ void Polish::search(double seconds, uint64_t seed) {
     x ^= x << 13, x ^= x >> 7, x ^= x << 17;
     return double(x >> 11) * 0x1p-53;
   };
-  std::vector<uint32_t> ring;
-  while (elapsed() < seconds && !job_.budget.stop()) {
-    if (relay) relay->note("improve", elapsed() / seconds, s_.T.vertexCount());
+  std::vector<uint32_t> ring, free;
+  auto ringOf = [&](uint32_t v) {
+    ring.clear();
+    uint32_t e0 = s_.T.vertexEdge[v], e = e0;
+    do {
+      ring.push_back(s_.T.tri[next(e)]);
+      e = s_.T.opp[prev(e)];
+    } while (e != e0);
+  };
+  // Kick: some free points part of the way to a neighbour, where their stars still meet the
+  // target.
+  auto kick = [&] {
     for (uint32_t v = uint32_t(inputVertices); v < s_.T.vertexCount(); ++v) {
       if (s_.T.vertexEdge[v] == kNone || s_.role[v] != kFree || random() >= kSearchKick) continue;
-      ring.clear();
-      uint32_t e0 = s_.T.vertexEdge[v], e = e0;
-      do {
-        ring.push_back(s_.T.tri[next(e)]);
-        e = s_.T.opp[prev(e)];
-      } while (e != e0);
+      ringOf(v);
       const uint32_t w = ring[std::min(ring.size() - 1, size_t(random() * double(ring.size())))];
       if (w == kGhost) continue;
       const double f = kSearchStep[0] + (kSearchStep[1] - kSearchStep[0]) * random();
@@ -84,6 +88,32 @@ void Polish::search(double seconds, uint64_t seed) {
       const double to[2] = {p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1])};
       relocation_.tryMoveTo(v, to);
     }
+  };
+  // Ruin and recreate: some free points out with some of their free neighbours, whatever
+  // that breaks, and refinement mends the holes (a temporary loss the rounds may win back).
+  auto ruin = [&] {
+    free.clear();
+    for (uint32_t v = uint32_t(inputVertices); v < s_.T.vertexCount(); ++v)
+      if (s_.T.vertexEdge[v] != kNone && s_.role[v] == kFree) free.push_back(v);
+    const size_t centres = std::max<size_t>(1, size_t(kRuinShare * double(free.size())));
+    for (size_t i = 0; i < centres && !free.empty(); ++i) {
+      const uint32_t v = free[std::min(free.size() - 1, size_t(random() * double(free.size())))];
+      if (s_.T.vertexEdge[v] == kNone) continue;
+      ringOf(v);
+      s_.T.removeVertex(v);
+      for (uint32_t w : ring)
+        if (w != kGhost && w >= inputVertices && s_.role[w] == kFree &&
+            s_.T.vertexEdge[w] != kNone && random() < kRuinNeighbour)
+          s_.T.removeVertex(w);
+    }
+    repair_.repairAll();
+  };
+  while (elapsed() < seconds && !job_.budget.stop()) {
+    if (relay) relay->note("improve", elapsed() / seconds, s_.T.vertexCount());
+    if (random() < kSearchRuin)
+      ruin();
+    else
+      kick();
     bool met = true;
     for (int r = 0; r < kSearchRounds && met; ++r) {
       round(false);

@@ -28,9 +28,10 @@ class Polish {
   // polish.cpp).
   void round(bool removeAfterMerging);
   // Options::optimize's search, on a mesh that meets the target, until `seconds` have passed
-  // or the budget stops it: each try kicks some free Steiner points (part of the way to a
-  // neighbour, where their stars still meet the target; chosen by `seed`), then makes
-  // kSearchRounds rounds; a try that ends with fewer points is kept, one with more is undone.
+  // or the budget stops it: each try either kicks some free Steiner points (part of the way to
+  // a neighbour, where their stars still meet the target) or ruins a few places (free points
+  // out, refinement mends the holes), chosen by `seed`, then makes kSearchRounds rounds; a try
+  // that ends with fewer points is kept, one with more (or short of the target) is undone.
   // The mesh left is the best found: never more points than it started with.
   void search(double seconds, uint64_t seed);
 
