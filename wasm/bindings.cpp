@@ -164,6 +164,8 @@ Options optionsFromJs(const val& o) {
   opt.timeLimit = o["timeLimit"].as<double>();
   opt.adjacency = !o["adjacency"].isUndefined() && o["adjacency"].as<bool>();
   if (!o["optimize"].isUndefined()) opt.optimize = o["optimize"].as<double>();
+  if (!o["optimizeTries"].isUndefined())
+    opt.optimizeTries = uint64_t(o["optimizeTries"].as<double>());
   if (!o["seed"].isUndefined()) opt.seed = uint64_t(o["seed"].as<double>());
   if (!o["maxEdge"].isUndefined()) opt.maxEdge = o["maxEdge"].as<double>();
   if (!o["grading"].isUndefined()) opt.grading = o["grading"].as<double>();
@@ -357,6 +359,7 @@ val defaultsToJs() {
   o.set("timeLimit", d.timeLimit);
   o.set("adjacency", d.adjacency);
   o.set("optimize", d.optimize);
+  o.set("optimizeTries", double(d.optimizeTries));
   o.set("seed", double(d.seed));
   o.set("qualityMinAngle", kQualityDefaultMinAngle);
   // The fill rule the input policy gives rings (fromRings' default, as for JSON rings).

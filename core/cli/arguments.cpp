@@ -34,7 +34,8 @@ std::string choices(const Entry (&table)[N]) {
 bool takesValue(const std::string& a) {
   for (const char* option : {"-o", "--output", "--format", "--mode", "--max-angle", "--min-angle",
                              "--max-area", "--max-edge", "--size", "--grading", "--max-steiner",
-                             "--fill", "--threads", "--time-limit", "--optimize", "--seed"})
+                             "--fill", "--threads", "--time-limit", "--optimize", "--optimize-tries",
+                             "--seed"})
     if (a == option) return true;
   return false;
 }
@@ -49,6 +50,7 @@ std::string missingValue(const std::string& a) {
   if (a == "--threads") return "--threads needs a count";
   if (a == "--time-limit") return "--time-limit needs seconds";
   if (a == "--optimize") return "--optimize needs seconds";
+  if (a == "--optimize-tries") return "--optimize-tries needs a count";
   if (a == "--seed") return "--seed needs a number";
   if (a == "--max-angle") return "--max-angle needs a number or auto";
   if (a == "--size") return "--size needs a size file (.json: a grid or points with sizes)";
@@ -133,6 +135,13 @@ std::string readValue(const std::string& a, const std::string& v, Arguments& arg
     opt.optimize = std::strtod(v.c_str(), &end);
     if (*end || v.empty() || !(opt.optimize >= 0) || opt.optimize > 1e6)
       return "--optimize needs seconds, 0 to 1000000, not '" + v + "'";
+  } else if (a == "--optimize-tries") {
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
+    if (*end || v.empty() || v[0] == '-' || errno == ERANGE)
+      return "--optimize-tries needs a whole number of tries, not '" + v + "'";
+    opt.optimizeTries = n;
   } else if (a == "--seed") {
     char* end = nullptr;
     errno = 0;
@@ -331,6 +340,9 @@ std::string usageText() {
   --optimize S         after refinement, spend S seconds looking for a mesh with fewer Steiner
                        points (acute at 90, nonobtuse, quality without sizes): the best mesh
                        found is kept, never one with more points
+  --optimize-tries N   at most N tries of that search per thread (with no --optimize, the
+                       search runs until N): the same seed, threads and N make the same mesh
+                       on any machine, which seconds do not
   --seed N             the --optimize search's random choices (default 1)
   --threads N          threads for acute and nonobtuse refinement (default: one per hardware
                        thread; 1: none besides the main one); the mesh is the same for any N

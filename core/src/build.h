@@ -87,6 +87,11 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options,
                   const Budget& budget, std::vector<uint8_t>& freeVertex,
                   std::vector<ExactVertex>& exact);
 
+// Options::optimize's search was asked for (seconds or tries).
+inline bool searchAsked(const Options& options) {
+  return options.optimize > 0 || options.optimizeTries > 0;
+}
+
 // The predicates are exact while products of coordinate differences neither overflow nor
 // underflow: every non-zero coordinate within about 2^-166 .. 2^166 (see predicates.h).
 // CoordinateRange collects the binary exponents (frexp) of the largest and of the smallest

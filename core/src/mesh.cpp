@@ -522,7 +522,7 @@ std::string checkOptions(const Options& options) {
 // Why Options::optimize's search does not run (null: it does, unless the domain is meshed
 // by parts).
 const char* searchLeftOut(const Options& options, const Options& target, bool refining) {
-  if (!(options.optimize > 0)) return nullptr;
+  if (!detail::searchAsked(options)) return nullptr;
   if (!refining) return "in a mode that does not refine";
   if (target.mode == Mode::Acute && target.maxAngle < 90) return "below 90 degrees yet";
   if (target.mode == Mode::Quality &&
@@ -693,7 +693,7 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
     stats.warnings.push_back(std::string("optimize has no effect ") + why);
   const bool inParts = refining && byParts &&
                        detail::meshByParts(T, inside, input, inputOf, target, budget, result);
-  if (inParts && options.optimize > 0)
+  if (inParts && detail::searchAsked(options))
     stats.warnings.push_back("optimize has no effect on a domain meshed by parts (several "
                              "parts, 4,096 triangles or more) yet");
   if (inParts) {

@@ -182,7 +182,7 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
       Options options = target;
       options.fill = FillRule::NonZero;
       options.convexHull = false;
-      options.optimize = 0;  // (not by parts yet: mesh() says so)
+      options.optimize = 0, options.optimizeTries = 0;  // (not by parts yet: mesh() says so)
       // The parts are the threads' work; but a part of more than a thread's share of the whole
       // would end last, alone: it gets them all, as the others are done.
       options.threads = progress.share(p) * threads > 1 ? threads : 1;

@@ -156,6 +156,12 @@ check "--optimize -1: usage error" run 2 --mode nonobtuse --optimize -1 "$work/A
 check "--optimize -1: says why" stderr_has "--optimize needs seconds, 0 to 1000000, not '-1'"
 check "--seed x: usage error" run 2 --mode nonobtuse --optimize 1 --seed x "$work/A.poly"
 check "--seed x: says why" stderr_has "--seed needs a whole number"
+# --optimize-tries: the same seed and tries, the same mesh (the files byte for byte).
+check "--optimize-tries 20" run 0 --mode nonobtuse --optimize-tries 20 --seed 3 -o "$work/tries1" "$work/A.poly"
+check "--optimize-tries 20 again" run 0 --mode nonobtuse --optimize-tries 20 --seed 3 -o "$work/tries2" "$work/A.poly"
+check "--optimize-tries: the same mesh" cmp -s "$work/tries1.node" "$work/tries2.node"
+check "--optimize-tries -3: usage error" run 2 --mode nonobtuse --optimize-tries -3 "$work/A.poly"
+check "--optimize-tries -3: says why" stderr_has "--optimize-tries needs a whole number of tries, not '-3'"
 check "--optimize in cdt: warns" run 0 --optimize 1 --no-output "$work/A.poly"
 check "--optimize in cdt: says so" stderr_has "optimize has no effect in a mode that does not refine"
 check "budget ends early" run 1 --mode acute --max-steiner 5 --stats -o "$work/budget" "$work/A.poly"

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <thread>
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
@@ -152,10 +153,80 @@ TEST(Optimize, SaysWhereItDoesNotRunAndRejectsBadSeconds) {
   o.mode = Mode::NonObtuse;
   o.maxArea = 0;
   EXPECT_FALSE(warnedOf(mesh(in.pslg, o)));
+  o.mode = Mode::Cdt;
+  o.optimize = 0;
+  o.optimizeTries = 3;  // (tries alone ask for the search too)
+  EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
   for (double bad : {-1.0, std::nan(""), HUGE_VAL}) {
     o.optimize = bad;
     const Result r = mesh(in.pslg, o);
     EXPECT_EQ(r.status, Status::BadInput) << bad;
     EXPECT_NE(r.message.find("optimize must be"), std::string::npos) << r.message;
   }
+}
+
+// Tries instead of seconds: the search stops after them, and the same seed, threads and tries
+// make the same mesh; other seeds make other searches. A cap on tries also ends a search given
+// seconds.
+namespace {
+struct TriesCase {
+  Input in;
+  Options o;
+  Result base;
+};
+TriesCase triesCase() {
+  const Case c = kCases[4];
+  TriesCase t{fixtures::load(fixtures::kData + "/" + c.file), optionsFor(c), {}};
+  applyInputPolicy(t.in, {}, t.o);
+  t.base = mesh(t.in.pslg, t.o);
+  t.o.optimizeTries = 40;
+  t.o.threads = 2;
+  return t;
+}
+}  // namespace
+
+TEST(Optimize, TriesMakeTheSameMeshEveryTime) {
+  TriesCase t = triesCase();
+  ASSERT_EQ(t.base.status, Status::Ok) << t.base.message;
+  const Result first = mesh(t.in.pslg, t.o);
+  expectGood(t.in.pslg, t.o, first, "tries");
+  EXPECT_LE(first.stats.steiner, t.base.stats.steiner);
+  const Result again = mesh(t.in.pslg, t.o);
+  EXPECT_EQ(again.mesh.points, first.mesh.points);
+  EXPECT_EQ(again.mesh.triangles, first.mesh.triangles);
+  bool differs = false;
+  for (uint64_t seed : {2, 3, 4, 5}) {
+    Options o = t.o;
+    o.seed = seed;
+    const Result r = mesh(t.in.pslg, o);
+    expectGood(t.in.pslg, o, r, "seed " + std::to_string(seed));
+    differs = differs || r.mesh.points != first.mesh.points;
+  }
+  EXPECT_TRUE(differs) << "five seeds made one mesh";
+
+  Options capped = t.o;
+  capped.optimize = 60;
+  capped.optimizeTries = 5;
+  const Clock::time_point start = Clock::now();
+  const Result r = mesh(t.in.pslg, capped);
+  EXPECT_LT(since(start), 30) << "5 tries did not end a 60 s search";
+  expectGood(t.in.pslg, capped, r, "capped");
+}
+
+// However long each try takes: the same tries with another search running beside them.
+TEST(Optimize, TriesMakeTheSameMeshWithALoadFromAnotherThread) {
+  TriesCase t = triesCase();
+  const Result first = mesh(t.in.pslg, t.o);
+  std::atomic<bool> busy{true};
+  std::thread load([&] {
+    Options other = t.o;
+    other.optimizeTries = 0;
+    other.optimize = 0.2;
+    while (busy) mesh(t.in.pslg, other);
+  });
+  const Result again = mesh(t.in.pslg, t.o);
+  busy = false;
+  load.join();
+  EXPECT_EQ(again.mesh.points, first.mesh.points);
+  EXPECT_EQ(again.mesh.triangles, first.mesh.triangles);
 }

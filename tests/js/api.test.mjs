@@ -461,6 +461,26 @@ test('optimize spends its time on fewer points and never returns more', () => {
   assert.throws(() => am.mesh(plate, { mode: 'nonobtuse', optimize: '1' }), TypeError);
 });
 
+// options.optimizeTries: the same seed and tries make the same mesh (seconds would not); it
+// caps a search given seconds; a bad count is bad input naming the option.
+test('optimizeTries makes the same mesh every time', () => {
+  const plate = am.parsePoly(readFileSync(join(testData, 'plate.poly'), 'utf8'));
+  const plain = am.mesh(plate, { mode: 'nonobtuse' });
+  const a = am.mesh(plate, { mode: 'nonobtuse', optimizeTries: 15, seed: 5 });
+  const b = am.mesh(plate, { mode: 'nonobtuse', optimizeTries: 15, seed: 5 });
+  assert.equal(a.options.optimizeTries, 15);
+  assert.ok(a.stats.certified && a.stats.targetMet);
+  assert.ok(a.stats.steiner <= plain.stats.steiner);
+  assert.deepEqual(a.points, b.points);
+  assert.deepEqual(a.triangles, b.triangles);
+  const start = performance.now();
+  am.mesh(plate, { mode: 'nonobtuse', optimize: 60, optimizeTries: 3 });
+  assert.ok(performance.now() - start < 30000, '3 tries did not end a 60 s search');
+  for (const bad of [-1, 2.5])
+    assert.throws(() => am.mesh(plate, { mode: 'nonobtuse', optimizeTries: bad }),
+      (e) => e.name === 'AcuteMeshError' && /^optimizeTries must be an integer from 0/.test(e.message));
+});
+
 // The anytime contract: a cancel while optimize searches returns the best mesh so far (status
 // 'cancelled', certified, meets the target, no more Steiner points than refinement's) long
 // before the time asked for; a cancel before the search has a mesh still rejects.

@@ -37,7 +37,7 @@ test('a misspelt mesh() option is a TypeError naming it and the nearest option',
   assert.throws(() => am.mesh(square, { threads: 2 }), unknownKey('threads', 'mesh()'));
   // The message lists every option.
   assert.throws(() => am.mesh(square, { x: 1 }), (e) => e.message === "unknown option 'x' of mesh() " +
-    '(mode, fill, convexHull, exactSegments, exactFeet, maxAngle, minAngle, maxArea, maxEdge, size, grading, maxSteiner, timeLimit, onProgress, signal, adjacency, optimize, seed)');
+    '(mode, fill, convexHull, exactSegments, exactFeet, maxAngle, minAngle, maxArea, maxEdge, size, grading, maxSteiner, timeLimit, onProgress, signal, adjacency, optimize, optimizeTries, seed)');
   // Present but undefined is still a slip.
   assert.throws(() => am.mesh(square, { maxangle: undefined }), unknownKey('maxangle', 'mesh()', 'maxAngle'));
 });

@@ -371,6 +371,9 @@ function toOptions(options, input, core, where) {
   const optimize = numberOption(options, 'optimize', defaults.optimize);
   if (!(optimize >= 0) || optimize === Infinity)
     throw badInput(`optimize must be a number of seconds >= 0 (0: none), not ${optimize}`);
+  const optimizeTries = numberOption(options, 'optimizeTries', defaults.optimizeTries);
+  if (!Number.isSafeInteger(optimizeTries) || optimizeTries < 0)
+    throw badInput(`optimizeTries must be an integer from 0 (no cap) to 2^53 - 1, not ${optimizeTries}`);
   const seed = numberOption(options, 'seed', defaults.seed);
   if (!Number.isSafeInteger(seed) || seed < 0)
     throw badInput(`seed must be an integer from 0 to 2^53 - 1, not ${seed}`);
@@ -391,6 +394,7 @@ function toOptions(options, input, core, where) {
     maxSteiner,
     timeLimit,
     optimize,
+    optimizeTries,
     seed,
     ...(options.size === undefined ? {} : { size: sizeOption(options.size) }),
   };
@@ -711,7 +715,8 @@ function makeApi(factory, compiled, memoryLimit, M) {
       sizes.rethrow();
       // A cancel while optimize searches (anytime) keeps the best mesh so far, which meets the
       // target: it is the answer, with status 'cancelled'. Any other cancel has no answer.
-      if (r.status === 'cancelled' && !(opts.optimize > 0 && r.stats.targetMet)) throw abortError(signal);
+      const searching = opts.optimize > 0 || opts.optimizeTries > 0;
+      if (r.status === 'cancelled' && !(searching && r.stats.targetMet)) throw abortError(signal);
       if (r.status === 'bad-input') throw badInput(r.message);
       const result = {
         points: r.points,

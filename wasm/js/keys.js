@@ -6,7 +6,7 @@
 // mesh carries (MeshResult.options) are a subset.
 export const MESH_OPTION_KEYS = ['mode', 'fill', 'convexHull', 'exactSegments', 'exactFeet',
   'maxAngle', 'minAngle', 'maxArea', 'maxEdge', 'size', 'grading', 'maxSteiner', 'timeLimit',
-  'onProgress', 'signal', 'adjacency', 'optimize', 'seed'];
+  'onProgress', 'signal', 'adjacency', 'optimize', 'optimizeTries', 'seed'];
 
 // init() and createInstance(); a worker's init options are these less locateFile.
 export const INIT_OPTION_KEYS = ['wasmUrl', 'locateFile', 'wasmBinary', 'wasmModule', 'maxMemory'];

@@ -135,7 +135,7 @@ class MeshWorker {
       const job = {
         id: this.nextId++, pslg, options: { ...rest, progress: onProgress !== undefined },
         resolve, reject, onProgress, cleanup: () => {},
-        cancelFlag: signal && options.optimize > 0 && canShareFlag()
+        cancelFlag: signal && (options.optimize > 0 || options.optimizeTries > 0) && canShareFlag()
           ? new Int32Array(new SharedArrayBuffer(4)) : undefined,
         aborted: null,  // the signal's reason, once the flag is set
       };

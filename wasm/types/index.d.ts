@@ -186,6 +186,11 @@ export interface MeshOptions {
    * without sizes; on the threads of a native build, one chain in WebAssembly.
    */
   optimize?: number;
+  /**
+   * At most this many tries of that search (0: no cap; alone, it starts the search too): the
+   * same seed and tries make the same mesh on any machine, which seconds do not.
+   */
+  optimizeTries?: number;
   /** The optimize search's random choices (default 1): the same seed, the same tries. */
   seed?: number;
   /**
@@ -236,6 +241,7 @@ export interface ResolvedOptions {
   timeLimit: number;
   adjacency: boolean;
   optimize: number;
+  optimizeTries: number;
   seed: number;
 }
 

@@ -131,11 +131,15 @@ struct Options {
                                   // at least 20000, plus room for the area bound)
   double timeLimit = 0.0;         // seconds (0 = unlimited)
   // Seconds to spend after refinement looking for a mesh with fewer Steiner points (0: none):
-  // an anytime search (random kicks, then improvement rounds; one chain per thread) that keeps
-  // the best mesh meeting the target and returns it when the time is up, at timeLimit or on a
-  // cancel, never one with more points than refinement made. Acute at 90 degrees, non-obtuse,
-  // and quality without sizes; not acute below 90 yet.
+  // an anytime search (random kicks and ruins, then improvement rounds; one chain per thread)
+  // that keeps the best mesh meeting the target and returns it when the time is up, at
+  // timeLimit or on a cancel, never one with more points than refinement made. Acute at 90
+  // degrees, non-obtuse, and quality without sizes; not acute below 90 yet.
   double optimize = 0.0;
+  // Tries of that search per thread at most (0: no cap); either this or optimize starts it.
+  // How many tries fit in the seconds depends on the machine: the same seed, threads and
+  // tries make the same mesh anywhere.
+  uint64_t optimizeTries = 0;
   uint64_t seed = 1;  // the search's random choices: the same seed and threads, the same tries
   // Steiner points that refinement puts on a segment lie exactly on its line wherever a
   // representable point there is near enough (as for integer coordinates): what an exact

@@ -50,7 +50,7 @@ void Polish::run() {
   }
 }
 
-void Polish::search(double seconds, uint64_t seed) {
+void Polish::search(double seconds, uint64_t tries, uint64_t seed) {
   const Target& target = job_.target;
   if (!target.countsPoints() || repair_.missesBeyondLeft()) return;
   const auto start = std::chrono::steady_clock::now();
@@ -108,8 +108,14 @@ void Polish::search(double seconds, uint64_t seed) {
     }
     repair_.repairAll();
   };
-  while (elapsed() < seconds && !job_.budget.stop()) {
-    if (relay) relay->note("improve", elapsed() / seconds, s_.T.vertexCount());
+  for (uint64_t done = 0; (seconds <= 0 || elapsed() < seconds) && (tries == 0 || done < tries) &&
+                          !job_.budget.stop();
+       ++done) {
+    if (relay) {
+      const double share = std::max(seconds > 0 ? elapsed() / seconds : 0,
+                                    tries > 0 ? double(done) / double(tries) : 0);
+      relay->note("improve", share, s_.T.vertexCount());
+    }
     if (random() < kSearchRuin)
       ruin();
     else

@@ -78,7 +78,7 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
     const ProgressRelay::Scope level(budget.progress());
     RefineState best;
     Options below = options;
-    below.optimize = 0;  // (its refinements are starts and steps of the descent)
+    below.optimize = 0, below.optimizeTries = 0;  // (its refinements are the descent's steps)
     StepResult result = refineBelow90(start, input, below, budget, best, exact);
     best.markFree(freeVertex);
     T = std::move(best.T);

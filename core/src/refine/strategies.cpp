@@ -326,7 +326,7 @@ void searchFewerPoints(StrategyRun& best, const Jobs& jobs) {
   }
   auto chain = [&](size_t i) {
     Refiner& refiner = i == 0 ? best.refiner() : *refiners[i - 1];
-    refiner.polisher().search(options.optimize, options.seed + i);
+    refiner.polisher().search(options.optimize, options.optimizeTries, options.seed + i);
   };
 #ifdef ACUTEMESH_THREADS
   std::vector<std::thread> helpers;
@@ -385,7 +385,7 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   // angles.)
   const bool settled =
       best.met || (best.result.ok() && !best.refiner().repairs().missesBeyondLeft());
-  const bool search = settled && options.optimize > 0 && quality == QualityRun::Mesh &&
+  const bool search = settled && searchAsked(options) && quality == QualityRun::Mesh &&
                       target.countsPoints() && !target.strictMax;
   {
     const ProgressRelay::Part part(budget.progress(), 0, search ? kPolishBeforeSearch : 1);
