@@ -144,8 +144,10 @@ TEST(Optimize, SaysWhereItDoesNotRunAndRejectsBadSeconds) {
   o.mode = Mode::Cdt;
   EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
   o.mode = Mode::Acute;
-  o.maxAngle = 85;
+  o.maxAngle = kAutoMaxAngle;
   EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
+  o.maxAngle = 85;
+  EXPECT_FALSE(warnedOf(mesh(in.pslg, o)));
   o.mode = Mode::Quality;
   o.maxAngle = 90;
   o.maxArea = 0.01;
@@ -229,4 +231,23 @@ TEST(Optimize, TriesMakeTheSameMeshWithALoadFromAnotherThread) {
   load.join();
   EXPECT_EQ(again.mesh.points, first.mesh.points);
   EXPECT_EQ(again.mesh.triangles, first.mesh.triangles);
+}
+
+// Below 90 degrees the search keeps the bound asked for: the mesh is certified below it and has
+// no more points than the descent's.
+TEST(Optimize, BelowNinetyKeepsTheBound) {
+  const Input in = fixtures::load(fixtures::kData + "/cgshop/simple-polygon_40_synthetic.instance.json");
+  Options o;
+  o.mode = Mode::Acute;
+  o.maxAngle = 85;
+  applyInputPolicy(in, {}, o);
+  const Result base = mesh(in.pslg, o);
+  ASSERT_EQ(base.status, Status::Ok) << base.message;
+  o.optimizeTries = 60;
+  const Result r = mesh(in.pslg, o);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+  expectGood(in.pslg, o, r, "85 degrees");
+  EXPECT_LT(r.stats.maxAngle, 85);
+  EXPECT_LT(r.stats.steiner, base.stats.steiner) << "60 tries found nothing";
+  for (const std::string& w : r.stats.warnings) EXPECT_EQ(w.find("optimize"), std::string::npos) << w;
 }

@@ -133,8 +133,9 @@ struct Options {
   // Seconds to spend after refinement looking for a mesh with fewer Steiner points (0: none):
   // an anytime search (random kicks and ruins, then improvement rounds; one chain per thread)
   // that keeps the best mesh meeting the target and returns it when the time is up, at
-  // timeLimit or on a cancel, never one with more points than refinement made. Acute at 90
-  // degrees, non-obtuse, and quality without sizes; not acute below 90 yet.
+  // timeLimit or on a cancel, never one with more points than refinement made. Acute (at a
+  // bound below 90 too, which it keeps; not kAutoMaxAngle), non-obtuse, and quality without
+  // sizes.
   double optimize = 0.0;
   // Tries of that search per thread at most (0: no cap); either this or optimize starts it.
   // How many tries fit in the seconds depends on the machine: the same seed, threads and

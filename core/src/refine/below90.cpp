@@ -169,25 +169,49 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
   return stopped.betterThan(polished) ? std::move(stopped) : std::move(polished);
 }
 
+// Options::optimize's search on the best mesh, which meets the bound asked for, at that bound
+// (and its minimum angle); its progress spans what is left of the run's.
+void searchAtTheBound(Candidate& best, const Pslg& input, const Options& asked,
+                      const Budget& budget, uint32_t steinerCap) {
+  RunLimits limits;
+  limits.steinerLimit = uint32_t(std::min(
+      {double(best.state.T.vertexCount()) + double(steinerCap),
+       asked.maxSteiner ? double(input.vertexCount()) + double(asked.maxSteiner)
+                        : double(kMaxVertices),
+       double(kMaxVertices)}));
+  const Strategy strategy;
+  const Target target(asked);
+  const Job job{input, asked, target, strategy, budget, &limits, smallestEdge2(input)};
+  Refiner refiner(best.state, job);
+  if (ProgressRelay* relay = budget.progress()) relay->span(relay->done(), 1);
+  searchFewerPoints(best.state, refiner, job, asked);
+  best = judge(std::move(best.state), input, asked);
+}
+
 }  // namespace
 
-StepResult refineBelow90(const RefineState& start, const Pslg& input, const Options& options,
+StepResult refineBelow90(const RefineState& start, const Pslg& input, const Options& asked,
                          const Budget& budget, RefineState& out, std::vector<ExactVertex>& exact) {
+  // (The refinements here are starts and steps of the descent: no search of their own.)
+  Options options = asked;
+  options.optimize = 0, options.optimizeTries = 0;
   const bool automatic = options.maxAngle == kAutoMaxAngle;
   Options at90 = options;
   at90.maxAngle = 90;
   RefineState first;
   RefineOutcome o = refineWithStrategies(start, input, at90, budget, 0, first, exact);
   Candidate best = judge(std::move(first), input, options);
+  uint32_t cap = 0;  // (set below: the Steiner points each try may add)
   auto finish = [&](StepResult result) {
+    if (best.met && !automatic && searchAsked(asked) && !budget.stop())
+      searchAtTheBound(best, input, asked, budget, cap);
     out = std::move(best.state);
     return result;
   };
   if (!best.acute || budget.stop()) return finish(o.result);
   exact.clear();  // (non-obtuse only)
   // Each later try may use a few times the points of the acute mesh.
-  const uint32_t cap =
-      uint32_t(std::min<double>(kBelow90Points * double(best.steiner) + 200, double(kMaxVertices)));
+  cap = uint32_t(std::min<double>(kBelow90Points * double(best.steiner) + 200, double(kMaxVertices)));
   const double lowest =
       automatic ? angleFloor(smallestDomainAngle(start.T)) + kAutoMargin : options.maxAngle;
   // (A domain whose floor is within a hair of 90 degrees leaves auto nothing to gain.)

@@ -77,9 +77,7 @@ StepResult refine(Triangulation& T, const Pslg& input, const Options& options, c
     // refinements it runs.
     const ProgressRelay::Scope level(budget.progress());
     RefineState best;
-    Options below = options;
-    below.optimize = 0, below.optimizeTries = 0;  // (its refinements are the descent's steps)
-    StepResult result = refineBelow90(start, input, below, budget, best, exact);
+    StepResult result = refineBelow90(start, input, options, budget, best, exact);
     best.markFree(freeVertex);
     T = std::move(best.T);
     return result;

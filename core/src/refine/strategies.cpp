@@ -116,6 +116,7 @@ class StrategyRun {
   RefineState& state() { return box_->state; }
   const RefineState& state() const { return box_->state; }
   RunLimits& limits() { return box_->limits; }
+  const Job& job() const { return box_->job; }
   Refiner& refiner() { return box_->refiner; }
   size_t liveSteiner() const { return box_->state.liveSteiner(box_->job.input.vertexCount()); }
 
@@ -303,30 +304,26 @@ class ConcurrentStrategies {
 };
 #endif
 
-// Options::optimize: Polish::search on the best run's mesh, and on as many copies as there are
-// threads to spare, each chain with its own seed; the fewest points win (the first chain on a
-// tie). Only the calling thread's chain reports progress.
-void searchFewerPoints(StrategyRun& best, const Jobs& jobs) {
-  const Options& options = jobs.options;
+}  // namespace
+
+void searchFewerPoints(RefineState& s, Refiner& refiner, const Job& job, const Options& search) {
   size_t chains = 1;
 #ifdef ACUTEMESH_THREADS
-  chains = std::max(1u, threadsFor(options));
+  chains = std::max(1u, threadsFor(search));
 #endif
-  std::vector<RefineState> copies(chains - 1, best.state());
-  std::vector<RunLimits> limits(chains - 1, best.limits());
-  std::vector<Job> copyJobs;
+  std::vector<RefineState> copies(chains - 1, s);
+  std::vector<RunLimits> limits(chains - 1, *job.limits);
+  std::vector<Job> copyJobs(chains - 1, job);
   std::vector<std::unique_ptr<Refiner>> refiners;
   for (size_t i = 1; i < chains; ++i) {
     limits[i - 1].reportProgress = false;
-    copyJobs.push_back(jobs(0));
-  }
-  for (size_t i = 1; i < chains; ++i) {
     copyJobs[i - 1].limits = &limits[i - 1];
     refiners.push_back(std::make_unique<Refiner>(copies[i - 1], copyJobs[i - 1]));
   }
   auto chain = [&](size_t i) {
-    Refiner& refiner = i == 0 ? best.refiner() : *refiners[i - 1];
-    refiner.polisher().search(options.optimize, options.optimizeTries, options.seed + i);
+    (i == 0 ? refiner : *refiners[i - 1])
+        .polisher()
+        .search(search.optimize, search.optimizeTries, search.seed + i);
   };
 #ifdef ACUTEMESH_THREADS
   std::vector<std::thread> helpers;
@@ -336,12 +333,10 @@ void searchFewerPoints(StrategyRun& best, const Jobs& jobs) {
 #else
   chain(0);
 #endif
-  const size_t inputVertices = jobs.input.vertexCount();
+  const size_t inputVertices = job.input.vertexCount();
   for (RefineState& copy : copies)
-    if (copy.liveSteiner(inputVertices) < best.liveSteiner()) best.state() = std::move(copy);
+    if (copy.liveSteiner(inputVertices) < s.liveSteiner(inputVertices)) s = std::move(copy);
 }
-
-}  // namespace
 
 RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    const Options& options, const Budget& budget,
@@ -393,7 +388,7 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   }
   if (search) {
     const ProgressRelay::Part part(budget.progress(), kPolishBeforeSearch, 1);
-    searchFewerPoints(best, jobs);
+    searchFewerPoints(best.state(), best.refiner(), best.job(), options);
   }
   RefineOutcome outcome;
   outcome.met = best.met;

@@ -14,6 +14,9 @@
 
 namespace acutemesh::detail {
 
+class Refiner;
+struct Job;
+
 // A quality run for its own mesh, or only as a start for another search (below90.cpp's
 // starts, tuned without the removals and polish that Target::countsPoints brings).
 enum class QualityRun { Mesh, Start };
@@ -35,6 +38,12 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
                                    std::vector<ExactVertex>& exact,
                                    RefineState* releaseStart = nullptr,
                                    QualityRun quality = QualityRun::Mesh);
+
+// Options::optimize's search (Polish::search) on s, which meets job's target (refiner: s's):
+// one chain per thread of `search` (seeds search.seed, + 1, ...), each on its own copy; the
+// fewest points win (the first chain on a tie). Only the calling thread's chain reports
+// progress.
+void searchFewerPoints(RefineState& s, Refiner& refiner, const Job& job, const Options& search);
 
 // The Steiner points a run may make: Options::maxSteiner, or without a budget from the caller
 // kSteinerPerInputVertex per input vertex, at least kSteinerAtLeast, and with area or size
