@@ -93,6 +93,16 @@ std::string readBound(const std::string& a, const std::string& v, Options& opt) 
   return {};
 }
 
+// A whole number from 0 to 2^64 - 1, in decimal: false (x unchanged) for anything else.
+bool readWhole(const std::string& v, uint64_t& x) {
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
+  if (*end || v.empty() || v[0] == '-' || errno == ERANGE) return false;
+  x = n;
+  return true;
+}
+
 std::string readCount(const std::string& a, const std::string& v, Options& opt) {
   char* end = nullptr;
   if (a == "--max-steiner") {
@@ -136,19 +146,11 @@ std::string readValue(const std::string& a, const std::string& v, Arguments& arg
     if (*end || v.empty() || !(opt.optimize >= 0) || opt.optimize > 1e6)
       return "--optimize needs seconds, 0 to 1000000, not '" + v + "'";
   } else if (a == "--optimize-tries") {
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
-    if (*end || v.empty() || v[0] == '-' || errno == ERANGE)
+    if (!readWhole(v, opt.optimizeTries))
       return "--optimize-tries needs a whole number of tries, not '" + v + "'";
-    opt.optimizeTries = n;
   } else if (a == "--seed") {
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long x = std::strtoull(v.c_str(), &end, 10);
-    if (*end || v.empty() || v[0] == '-' || errno == ERANGE)
+    if (!readWhole(v, opt.seed))
       return "--seed needs a whole number from 0 to 2^64 - 1, not '" + v + "'";
-    opt.seed = x;
   } else {
     return readBound(a, v, opt);
   }

@@ -2,6 +2,7 @@
 import { readFileSync, readdirSync, existsSync, statSync, appendFileSync } from 'node:fs';
 import { join, dirname, basename, extname, relative, isAbsolute } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import assert from 'node:assert/strict';
 
 export const root = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const testData = join(root, 'tests', 'data');
@@ -83,3 +84,13 @@ export function load(am, path) {
 
 // A fixture's name for test titles: its path from the directory holding the repository.
 export const label = (path) => relative(join(root, '..'), path);
+
+// What a cancel during optimize's search answers (the anytime contract): the best mesh so far,
+// status 'cancelled', certified, meeting the target, valid for `pslg`, and no more Steiner
+// points than `plain` (the same options without the search).
+export function assertBestSoFar(am, pslg, m, plain) {
+  assert.equal(m.status, 'cancelled');
+  assert.ok(m.stats.certified && m.stats.targetMet);
+  assert.ok(am.validate(pslg, m).ok);
+  assert.ok(m.stats.steiner <= plain.stats.steiner, `${m.stats.steiner} > ${plain.stats.steiner}`);
+}
