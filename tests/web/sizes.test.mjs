@@ -290,6 +290,7 @@ test('cancel during "spend more time" shows the best mesh found', async () => {
   const line = await status(page);
   assert.match(line.text, /the search for fewer points was cancelled; the best mesh it found is shown, certified non-obtuse/);
   assert.equal(line.kind, '');
+  await page.screenshot({ path: join(artifacts, 'optimize-cancelled.png') });
   assert.equal(await page.isDisabled('[data-testid=cancel-button]'), true);
   assert.deepEqual(errors, []);
   await context.close();
