@@ -33,7 +33,8 @@ class Polish {
   // out, refinement mends the holes), chosen by `seed`, then makes kSearchRounds rounds; a try
   // that ends with fewer points is kept, one with more (or short of the target) is undone.
   // The mesh left is the best found: never more points than it started with.
-  // tries: at most that many (0: no cap); seconds 0: no time of its own.
+  // tries: at most that many (0: no cap); seconds 0: no time of its own (one of the two must
+  // be set: the callers ask searchAsked).
   void search(double seconds, uint64_t tries, uint64_t seed);
 
  private:
