@@ -4,7 +4,7 @@
 // WebAssembly.Module, this file does the rest. The names of modes, fill rules, formats and
 // statuses, and the options' defaults, come from the core (core_vocabulary, exported as
 // `vocabulary`): none is written here.
-import { checkKeys, MESH_OPTION_KEYS, INIT_OPTION_KEYS } from './keys.js';
+import { checkKeys, searchAsked, MESH_OPTION_KEYS, INIT_OPTION_KEYS } from './keys.js';
 
 /** Errors from acutemesh itself; `code` says what kind (see index.d.ts). */
 export class AcuteMeshError extends Error {
@@ -715,8 +715,7 @@ function makeApi(factory, compiled, memoryLimit, M) {
       sizes.rethrow();
       // A cancel while optimize searches (anytime) keeps the best mesh so far, which meets the
       // target: it is the answer, with status 'cancelled'. Any other cancel has no answer.
-      const searching = opts.optimize > 0 || opts.optimizeTries > 0;
-      if (r.status === 'cancelled' && !(searching && r.stats.targetMet)) throw abortError(signal);
+      if (r.status === 'cancelled' && !(searchAsked(opts) && r.stats.targetMet)) throw abortError(signal);
       if (r.status === 'bad-input') throw badInput(r.message);
       const result = {
         points: r.points,

@@ -8,6 +8,9 @@ export const MESH_OPTION_KEYS = ['mode', 'fill', 'convexHull', 'exactSegments', 
   'maxAngle', 'minAngle', 'maxArea', 'maxEdge', 'size', 'grading', 'maxSteiner', 'timeLimit',
   'onProgress', 'signal', 'adjacency', 'optimize', 'optimizeTries', 'seed'];
 
+// mesh()'s optimize search was asked for, in seconds or tries (the core's searchAsked).
+export const searchAsked = (options) => options.optimize > 0 || options.optimizeTries > 0;
+
 // init() and createInstance(); a worker's init options are these less locateFile.
 export const INIT_OPTION_KEYS = ['wasmUrl', 'locateFile', 'wasmBinary', 'wasmModule', 'maxMemory'];
 

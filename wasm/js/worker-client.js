@@ -14,7 +14,7 @@
 // answers with the best mesh so far (api.js); a worker that has not answered kCancelGraceMs
 // later is terminated.
 import { AcuteMeshError } from './api.js';
-import { checkKeys, MESH_OPTION_KEYS, INIT_OPTION_KEYS } from './keys.js';
+import { checkKeys, searchAsked, MESH_OPTION_KEYS, INIT_OPTION_KEYS } from './keys.js';
 
 const kCancelGraceMs = 1000;
 const canShareFlag = () => typeof SharedArrayBuffer === 'function' && globalThis.crossOriginIsolated !== false;
@@ -135,7 +135,7 @@ class MeshWorker {
       const job = {
         id: this.nextId++, pslg, options: { ...rest, progress: onProgress !== undefined },
         resolve, reject, onProgress, cleanup: () => {},
-        cancelFlag: signal && (options.optimize > 0 || options.optimizeTries > 0) && canShareFlag()
+        cancelFlag: signal && searchAsked(options) && canShareFlag()
           ? new Int32Array(new SharedArrayBuffer(4)) : undefined,
         aborted: null,  // the signal's reason, once the flag is set
       };

@@ -114,14 +114,21 @@ RefineState qualityMesh(const RefineState& from, const Pslg& input, const Option
 // lowest level met, polished at that level, unless where the descent stopped is better.
 // With `graded`, the triangles too skinny for a level (an angle under 180 - 2 level) are
 // refined away before it (quality refinement, which ends for such angles).
-Candidate descend(RefineState s, const Pslg& input, const Options& options, const Budget& budget,
-                  uint32_t steinerCap, double lowest, bool graded, double done, double share) {
+// The limits of work on `s` that may add steinerCap points, within Options::maxSteiner.
+RunLimits cappedLimits(const RefineState& s, const Pslg& input, const Options& options,
+                       uint32_t steinerCap) {
   RunLimits limits;
   const double budgetLimit = options.maxSteiner
                                  ? double(input.vertexCount()) + double(options.maxSteiner)
                                  : double(kMaxVertices);
   limits.steinerLimit = uint32_t(
       std::min({s.T.vertexCount() + double(steinerCap), budgetLimit, double(kMaxVertices)}));
+  return limits;
+}
+
+Candidate descend(RefineState s, const Pslg& input, const Options& options, const Budget& budget,
+                  uint32_t steinerCap, double lowest, bool graded, double done, double share) {
+  RunLimits limits = cappedLimits(s, input, options, steinerCap);
   const Strategy strategy;
   const double minEdge2 = smallestEdge2(input);
   RefineState met;
@@ -173,12 +180,7 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
 // (and its minimum angle); its progress spans what is left of the run's.
 void searchAtTheBound(Candidate& best, const Pslg& input, const Options& asked,
                       const Budget& budget, uint32_t steinerCap) {
-  RunLimits limits;
-  limits.steinerLimit = uint32_t(std::min(
-      {double(best.state.T.vertexCount()) + double(steinerCap),
-       asked.maxSteiner ? double(input.vertexCount()) + double(asked.maxSteiner)
-                        : double(kMaxVertices),
-       double(kMaxVertices)}));
+  RunLimits limits = cappedLimits(best.state, input, asked, steinerCap);
   const Strategy strategy;
   const Target target(asked);
   const Job job{input, asked, target, strategy, budget, &limits, smallestEdge2(input)};
