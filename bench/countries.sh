@@ -20,7 +20,8 @@
 #     COUNTRIES_WASM_ALL=1;
 #  5. bench/inputs/countries_report.mjs writes bench/results/countries-YYYY-MM-DD.md, printed here.
 #
-# BENCH_QUICK=1 skips Canada; COUNTRIES="gr no" runs just those. A run cut by its --time-limit shows as "cut"; one killed (at twice
+# BENCH_QUICK=1 skips Canada; COUNTRIES="gr no" runs just those; COUNTRIES_OPTIMIZE=S adds one
+# acute and one non-obtuse run with `--optimize S` per country (issue 27: the search by parts). A run cut by its --time-limit shows as "cut"; one killed (at twice
 # the limit + 60 s) or failing shows its exit status and first error line.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -100,6 +101,14 @@ while IFS='|' read -r id label code file runs limit; do
         --threads 2 --time-limit "$limit" "$file"
     done
   done
+  if [[ -n "${COUNTRIES_OPTIMIZE:-}" ]]; then
+    for mode in acute nonobtuse; do
+      cut -d' ' -f1 /proc/loadavg >"$RUNDIR/$id.$mode-optimize.load"
+      note "$id ($label): $mode --optimize $COUNTRIES_OPTIMIZE, load $(cat "$RUNDIR/$id.$mode-optimize.load")"
+      timed "$RUNDIR/$id.$mode-optimize.1" $((2 * limit + 60 + 2 * COUNTRIES_OPTIMIZE)) ./build/acutemesh --mode "$mode" \
+        --stats --no-output --threads 2 --time-limit "$((limit + COUNTRIES_OPTIMIZE))" --optimize "$COUNTRIES_OPTIMIZE" "$file"
+    done
+  fi
   if ((wasm)) && [[ "$id" != ca || "${COUNTRIES_WASM_ALL:-0}" == 1 ]]; then
     cut -d' ' -f1 /proc/loadavg >"$RUNDIR/$id.wasm-acute.load"
     note "$id ($label): acute in Node (WASM), load $(cat "$RUNDIR/$id.wasm-acute.load")"

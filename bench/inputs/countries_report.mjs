@@ -158,6 +158,34 @@ if (coast) {
   targets.push(`- A 10^6-vertex coastline acute, certified, in under ${TARGET.coastlineSeconds} s natively (under a minute in WASM): not measured (no input of 10^6 vertices in this run).`);
 }
 
+// --- the search (COUNTRIES_OPTIMIZE=S: ID.acute-optimize.1 and ID.nonobtuse-optimize.1) -----------
+const optimizeSeconds = Number(process.env.COUNTRIES_OPTIMIZE) || null;
+const searchRows = [];
+for (const c of cases) {
+  for (const mode of ['acute', 'nonobtuse']) {
+    const r = measure(c.id, `${mode}-optimize`, 1);
+    if (!r) continue;
+    const plain = figures.find((f) => f.c === c && f.mode === mode)?.s;
+    const s = r.stats;
+    const change = s && plain ? `${(((s.steiner - plain.steiner) / plain.steiner) * 100).toFixed(1)}%` : '—';
+    searchRows.push(`| ${inputLabel(c)} | ${mode} | ${r.load} | ${fmtInt(plain?.steiner)} | ${fmtS(totalSeconds(plain))} | ` +
+      `${fmtInt(s?.steiner)} | ${change} | ${fmtS(totalSeconds(s))} | ${result(mode, r, c.limit)} |`);
+  }
+}
+const search = searchRows.length
+  ? [
+      `## \`--optimize ${optimizeSeconds ?? '?'}\` (the search for fewer points, part by part)`,
+      '',
+      '| input | mode | load | Steiner without | CLI s | Steiner with | change | CLI s | result |',
+      '|---|---|---:|---:|---:|---:|---:|---:|---|',
+      ...searchRows,
+      '',
+      'The same command as the table\'s with `--optimize S` (one run; its --time-limit raised by S): each part of the domain ' +
+        'searches on its own mesh with its share of the seconds (docs/algorithm.md). "without": the table\'s best run above.',
+      '',
+    ]
+  : [];
+
 // --- machine and provenance --------------------------------------------------------------------
 const cache = readText('build/CMakeCache.txt') || '';
 const cacheVar = (k) => cache.match(new RegExp(`^${k}:[A-Z]+=(.*)$`, 'm'))?.[1] ?? '?';
@@ -201,6 +229,7 @@ const lines = [
   '',
   ...targets,
   '',
+  ...search,
   `- Runs: \`build/acutemesh --mode MODE --stats --no-output --threads 2 --time-limit L INPUT\` (quality: the default minimum angle, 20°), ` +
     `each under GNU time; L: ${limits}; runs per mode: ${runsText}. "wall s": the process's wall time, best of the runs; "CLI s": ` +
     'that run\'s `seconds.total` from `--stats` (read, mesh, figures). triangles/s: output triangles / CLI s. Peak RSS: GNU time\'s ' +

@@ -519,8 +519,7 @@ std::string checkOptions(const Options& options) {
   return detail::checkSizes(options);
 }
 
-// Why Options::optimize's search does not run (null: it does, unless the domain is meshed
-// by parts).
+// Why Options::optimize's search does not run (null: it does).
 const char* searchLeftOut(const Options& options, const Options& target, bool refining) {
   if (!detail::searchAsked(options)) return nullptr;
   if (!refining) return "in a mode that does not refine";
@@ -694,9 +693,6 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
     stats.warnings.push_back(std::string("optimize has no effect ") + why);
   const bool inParts = refining && byParts &&
                        detail::meshByParts(T, inside, input, inputOf, target, budget, result);
-  if (inParts && detail::searchAsked(options))
-    stats.warnings.push_back("optimize has no effect on a domain meshed by parts (several "
-                             "parts, 4,096 triangles or more) yet");
   if (inParts) {
     clock.end("refine", "output");
   } else if (refining) {

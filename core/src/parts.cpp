@@ -182,10 +182,13 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
       Options options = target;
       options.fill = FillRule::NonZero;
       options.convexHull = false;
-      options.optimize = 0, options.optimizeTries = 0;  // (not by parts yet: mesh() says so)
       // The parts are the threads' work; but a part of more than a thread's share of the whole
       // would end last, alone: it gets them all, as the others are done.
       options.threads = progress.share(p) * threads > 1 ? threads : 1;
+      // The search's seconds (Options::optimize) are the threads' seconds shared out by the
+      // parts' weights, each part's over the threads it has, so that the parts' searches end
+      // at about the time asked; its tries (optimizeTries) are per part and thread.
+      options.optimize = target.optimize * progress.share(p) * threads / options.threads;
       if (target.timeLimit > 0)  // (what is left of it; 0 would mean none)
         options.timeLimit = std::max(target.timeLimit - budget.elapsed(), 1e-9);
       options.progress = [&, p, reporting](const Progress& r) {

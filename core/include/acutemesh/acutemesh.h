@@ -135,9 +135,10 @@ struct Options {
   // that keeps the best mesh meeting the target and returns it when the time is up, at
   // timeLimit or on a cancel, never one with more points than refinement made. Acute (at a
   // bound below 90 too, which it keeps; not kAutoMaxAngle), non-obtuse, and quality without
-  // sizes.
+  // sizes. A domain meshed by parts shares the seconds out among its parts by their size.
   double optimize = 0.0;
-  // Tries of that search per thread at most (0: no cap); either this or optimize starts it.
+  // Tries of that search per thread (by parts: per part and thread) at most (0: no cap);
+  // either this or optimize starts it.
   // How many tries fit in the seconds depends on the machine: the same seed, threads and
   // tries make the same mesh anywhere.
   uint64_t optimizeTries = 0;
