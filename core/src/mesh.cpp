@@ -523,8 +523,6 @@ std::string checkOptions(const Options& options) {
 const char* searchLeftOut(const Options& options, const Options& target, bool refining) {
   if (!detail::searchAsked(options)) return nullptr;
   if (!refining) return "in a mode that does not refine";
-  if (target.mode == Mode::Acute && target.maxAngle == kAutoMaxAngle)
-    return "with an automatic bound (max angle auto) yet: give the bound";
   if (target.mode == Mode::Quality &&
       (target.maxArea > 0 || target.maxEdge > 0 || !target.size.empty() || target.minAngle == 0))
     return "on quality meshes with sizes or an area bound";

@@ -144,8 +144,6 @@ TEST(Optimize, SaysWhereItDoesNotRunAndRejectsBadSeconds) {
   o.mode = Mode::Cdt;
   EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
   o.mode = Mode::Acute;
-  o.maxAngle = kAutoMaxAngle;
-  EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
   o.maxAngle = 85;
   EXPECT_FALSE(warnedOf(mesh(in.pslg, o)));
   o.mode = Mode::Quality;
@@ -250,4 +248,24 @@ TEST(Optimize, BelowNinetyKeepsTheBound) {
   EXPECT_LT(r.stats.maxAngle, 85);
   EXPECT_LT(r.stats.steiner, base.stats.steiner) << "60 tries found nothing";
   for (const std::string& w : r.stats.warnings) EXPECT_EQ(w.find("optimize"), std::string::npos) << w;
+}
+
+// With --max-angle auto the search runs at the bound the run reached (as the stats say it): the
+// mesh keeps that bound, certified, with no more points.
+TEST(Optimize, AutoKeepsTheBoundReached) {
+  const Input in = fixtures::load(fixtures::kData + "/A.poly");
+  Options o;
+  o.mode = Mode::Acute;
+  o.maxAngle = kAutoMaxAngle;
+  const Result base = mesh(in.pslg, o);
+  ASSERT_EQ(base.status, Status::Ok) << base.message;
+  ASSERT_LT(base.stats.angleBound, 80);
+  o.optimizeTries = 5;
+  const Result r = mesh(in.pslg, o);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+  EXPECT_EQ(fixtures::validationErrors(in.pslg, o, r.mesh), "");
+  EXPECT_TRUE(r.stats.certified);
+  EXPECT_LE(r.stats.angleBound, base.stats.angleBound);
+  EXPECT_LE(r.stats.steiner, base.stats.steiner);
+  for (const std::string& w : r.stats.warnings) ADD_FAILURE() << w;
 }

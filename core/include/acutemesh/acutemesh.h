@@ -134,8 +134,9 @@ struct Options {
   // an anytime search (random kicks and ruins, then improvement rounds; one chain per thread)
   // that keeps the best mesh meeting the target and returns it when the time is up, at
   // timeLimit or on a cancel, never one with more points than refinement made. Acute (at a
-  // bound below 90 too, which it keeps; not kAutoMaxAngle), non-obtuse, and quality without
-  // sizes. A domain meshed by parts shares the seconds out among its parts by their size.
+  // bound below 90 too, which it keeps; with kAutoMaxAngle, the bound reached), non-obtuse,
+  // and quality without sizes. A domain meshed by parts shares the seconds out among its
+  // parts by their size.
   double optimize = 0.0;
   // Tries of that search per thread (by parts: per part and thread) at most (0: no cap);
   // either this or optimize starts it.

@@ -176,8 +176,8 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
   return stopped.betterThan(polished) ? std::move(stopped) : std::move(polished);
 }
 
-// Options::optimize's search on the best mesh, which meets the bound asked for, at that bound
-// (and its minimum angle); its progress spans what is left of the run's.
+// Options::optimize's search on the best mesh, which meets the bound `asked` gives, at that
+// bound (and its minimum angle); its progress spans what is left of the run's.
 void searchAtTheBound(Candidate& best, const Pslg& input, const Options& asked,
                       const Budget& budget, uint32_t steinerCap) {
   RunLimits limits = cappedLimits(best.state, input, asked, steinerCap);
@@ -205,8 +205,21 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
   Candidate best = judge(std::move(first), input, options);
   uint32_t cap = 0;  // (set below: the Steiner points each try may add)
   auto finish = [&](StepResult result) {
-    if (best.met && !automatic && searchAsked(asked) && !budget.stop())
-      searchAtTheBound(best, input, asked, budget, cap);
+    if (searchAsked(asked) && !budget.stop()) {
+      if (best.met && !automatic) {
+        searchAtTheBound(best, input, asked, budget, cap);
+      } else if (automatic && best.acute) {
+        // (Auto: at the bound reached, as the stats will say it: the first tenth of a degree
+        // above the largest angle that the mesh is certified below; 90 at most.)
+        Options reached = asked;
+        const double largest = std::acos(std::max(-1.0, std::min(1.0, best.cosLargest))) / kDegree;
+        for (int tenths = std::max(601, int(std::floor(largest * 10)) + 1); tenths <= 900; ++tenths) {
+          reached.maxAngle = tenths / 10.0;
+          if (!Target(reached).anyMissed(best.state)) break;
+        }
+        searchAtTheBound(best, input, reached, budget, cap);
+      }
+    }
     out = std::move(best.state);
     return result;
   };
