@@ -17,7 +17,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-heavy='EveryCgshopInstance|ThreadsMakeTheSameMesh|MaxAngleBelowNinety|AutoSaysTheBoundReached|AutoKeepsTheBoundReached'
+heavy='EveryCgshopInstance|ThreadsMakeTheSameMesh|MaxAngleBelowNinety|AutoSaysTheBoundReached'
 heavy+='|Progress\.(FractionMovesBelow90|LargeCoastline)|(Labels|Sizes|Parts)\.[A-Za-z]*ByPartsOnAnyThreads|^cli$'
 skip=${SANITIZE_SKIP-consumer|$heavy}
 flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all"

@@ -66,7 +66,7 @@ void Polish::search(double seconds, uint64_t tries, uint64_t seed) {
     x ^= x << 13, x ^= x >> 7, x ^= x << 17;
     return double(x >> 11) * 0x1p-53;
   };
-  std::vector<uint32_t> ring, free;
+  std::vector<uint32_t> ring, steiner;
   auto ringOf = [&](uint32_t v) {
     ring.clear();
     uint32_t e0 = s_.T.vertexEdge[v], e = e0;
@@ -89,22 +89,32 @@ void Polish::search(double seconds, uint64_t tries, uint64_t seed) {
       relocation_.tryMoveTo(v, to);
     }
   };
-  // Ruin and recreate: some free points out with some of their free neighbours, whatever
-  // that breaks, and refinement mends the holes (a temporary loss the rounds may win back).
-  auto ruin = [&] {
-    free.clear();
-    for (uint32_t v = uint32_t(inputVertices); v < s_.T.vertexCount(); ++v)
-      if (s_.T.vertexEdge[v] != kNone && s_.role[v] == kFree) free.push_back(v);
-    const size_t centres = std::max<size_t>(1, size_t(kRuinShare * double(free.size())));
-    for (size_t i = 0; i < centres && !free.empty(); ++i) {
-      const uint32_t v = free[std::min(free.size() - 1, size_t(random() * double(free.size())))];
-      if (s_.T.vertexEdge[v] == kNone) continue;
-      ringOf(v);
+  // Ruin and recreate: some Steiner points out (free ones, and points on segments, whose
+  // pieces join again) with some of their neighbours, whatever that breaks, and refinement
+  // mends the holes (a temporary loss the rounds may win back).
+  auto ruinable = [&](uint32_t v) {
+    return v >= inputVertices && s_.T.vertexEdge[v] != kNone &&
+           (s_.role[v] == kFree || s_.role[v] == kOnSegment);
+  };
+  auto takeOut = [&](uint32_t v) {
+    uint32_t ends[2];
+    if (s_.role[v] == kFree)
       s_.T.removeVertex(v);
+    else
+      s_.T.removeFromSegment(v, ends);
+  };
+  auto ruin = [&] {
+    steiner.clear();
+    for (uint32_t v = uint32_t(inputVertices); v < s_.T.vertexCount(); ++v)
+      if (ruinable(v)) steiner.push_back(v);
+    const size_t centres = std::max<size_t>(1, size_t(kRuinShare * double(steiner.size())));
+    for (size_t i = 0; i < centres && !steiner.empty(); ++i) {
+      const uint32_t v = steiner[std::min(steiner.size() - 1, size_t(random() * double(steiner.size())))];
+      if (!ruinable(v)) continue;
+      ringOf(v);
+      takeOut(v);
       for (uint32_t w : ring)
-        if (w != kGhost && w >= inputVertices && s_.role[w] == kFree &&
-            s_.T.vertexEdge[w] != kNone && random() < kRuinNeighbour)
-          s_.T.removeVertex(w);
+        if (w != kGhost && ruinable(w) && random() < kRuinNeighbour) takeOut(w);
     }
     repair_.repairAll();
   };
