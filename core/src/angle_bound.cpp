@@ -53,11 +53,11 @@ bool meshBelow(const Mesh& mesh, const AngleCheck& check) {
   return true;
 }
 
-double tenthBound(const Mesh& mesh, double largest) {
+double tenthBound(double largest, const std::function<bool(double)>& below) {
   // The floating-point largest angle is off by far less than a tenth: the first tenth above it
   // is nearly always certified, the next one otherwise.
   for (int tenths = std::max(601, int(std::floor(largest * 10)) + 1); tenths < 900; ++tenths)
-    if (meshBelow(mesh, AngleCheck(tenths / 10.0))) return tenths / 10.0;
+    if (below(tenths / 10.0)) return tenths / 10.0;
   return 90;
 }
 

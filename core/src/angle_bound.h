@@ -3,6 +3,8 @@
 // every corner; the few it leaves are decided with exact integers (exact.h).
 #pragma once
 
+#include <functional>
+
 #include "acutemesh/acutemesh.h"
 
 namespace acutemesh::detail {
@@ -29,8 +31,8 @@ class AngleCheck {
 bool meshBelow(const Mesh& mesh, const AngleCheck& check);
 
 // For a mesh whose largest angle, measured in floating point, is `largest`: the lowest tenth of
-// a degree above it that every angle is certified below, and 90 if that is none below 90 (for a
-// mesh the caller knows is acute).
-double tenthBound(const Mesh& mesh, double largest);
+// a degree above it that every angle is certified below (`below(bound)`, exact), and 90 if that
+// is none below 90 (for a mesh the caller knows is acute). The bound --max-angle auto reports.
+double tenthBound(double largest, const std::function<bool(double)>& below);
 
 }  // namespace acutemesh::detail

@@ -353,7 +353,9 @@ double certifiedAngleBound(const Options& options, const Mesh& mesh, const Stats
   if (options.maxAngle >= 90) return 90;  // the dot-product signs of nonAcute say so
   if (options.maxAngle != kAutoMaxAngle && detail::meshBelow(mesh, detail::AngleCheck(options.maxAngle)))
     return options.maxAngle;
-  return detail::tenthBound(mesh, stats.maxAngle);
+  return detail::tenthBound(stats.maxAngle, [&](double bound) {
+    return detail::meshBelow(mesh, detail::AngleCheck(bound));
+  });
 }
 
 // Whether the refined mesh meets the target, certified exactly for the angle bounds (acute:

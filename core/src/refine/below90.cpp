@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "../angle_bound.h"
 #include "../domain_angles.h"
 #include "descent.h"
 #include "fans.h"
@@ -209,14 +210,14 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
       if (best.met && !automatic) {
         searchAtTheBound(best, input, asked, budget, cap);
       } else if (automatic && best.acute) {
-        // (Auto: at the bound reached, as the stats will say it: the first tenth of a degree
-        // above the largest angle that the mesh is certified below; 90 at most.)
+        // (Auto: at the bound reached, as the stats will say it.)
         Options reached = asked;
         const double largest = std::acos(std::max(-1.0, std::min(1.0, best.cosLargest))) / kDegree;
-        for (int tenths = std::max(601, int(std::floor(largest * 10)) + 1); tenths <= 900; ++tenths) {
-          reached.maxAngle = tenths / 10.0;
-          if (!Target(reached).anyMissed(best.state)) break;
-        }
+        reached.maxAngle = tenthBound(largest, [&](double bound) {
+          Options at = asked;
+          at.maxAngle = bound;
+          return !Target(at).anyMissed(best.state);
+        });
         searchAtTheBound(best, input, reached, budget, cap);
       }
     }
