@@ -39,3 +39,14 @@ select_cgshop() {
       }
     }'
 }
+
+# report_path NAME: bench/results/NAME-YYYY-MM-DD.md, or -2, -3, ... when a report of that name
+# and day exists already (reports are kept as they were written).
+report_path() {
+  local out="bench/results/$1-$(date +%F).md" k=2
+  while [[ -e "$out" ]]; do
+    out="bench/results/$1-$(date +%F)-$k.md"
+    k=$((k + 1))
+  done
+  echo "$out"
+}

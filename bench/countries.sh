@@ -25,6 +25,8 @@
 # the limit + 60 s) or failing shows its exit status and first error line.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+# shellcheck source=bench/common.sh
+source bench/common.sh
 
 COUNTRIES_REQUIREMENTS=(
   "/usr/bin/gmt:gmt"
@@ -119,12 +121,7 @@ export LOAD_END
 LOAD_END=$(cut -d' ' -f1-3 /proc/loadavg)
 
 # --- report -----------------------------------------------------------------------------------
-out="bench/results/countries-$(date +%F).md"  # (a second run the same day: -2, -3, ...)
-k=2
-while [[ -e "$out" ]]; do
-  out="bench/results/countries-$(date +%F)-$k.md"
-  k=$((k + 1))
-done
+out="$(report_path countries)"
 node bench/inputs/countries_report.mjs --work "$WORK" --out "$out"
 echo
 cat "$out"

@@ -178,7 +178,7 @@ elif [[ -n "$acute_bin" ]]; then
 fi
 
 # --- report -----------------------------------------------------------------------------------
-out="bench/results/max-angle-$(date +%F).md"
+out="$(report_path max-angle)"
 LOAD_START="$load_start" ELAPSED=$(($(date +%s) - started)) TIME_LIMIT="$TIME_LIMIT" \
   CGSHOP_LIMIT="$CGSHOP_LIMIT" PER_CATEGORY="$PER_CATEGORY" QUICK="$QUICK" BOUNDS="$BOUNDS" \
   node bench/inputs/max_angle_report.mjs --work "$WORK" --cgshop "$cgshop_dir" --out "$out"

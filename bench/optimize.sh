@@ -131,7 +131,7 @@ done <"$WORK/selected.txt"
 load_end=$(cut -d' ' -f1-3 /proc/loadavg)
 
 # --- report -----------------------------------------------------------------------------------
-out="bench/results/optimize-$(date +%F).md"
+out="$(report_path optimize)"
 LOAD_START="$load_start" LOAD_END="$load_end" ELAPSED=$(($(date +%s) - started)) \
   SECONDS_LIST="$SECONDS_LIST" PER_CATEGORY="$PER_CATEGORY" MODES="$MODES" \
   node bench/inputs/optimize_report.mjs --work "$WORK" --cgshop "$cgshop_dir" --out "$out"

@@ -198,7 +198,7 @@ else
 fi
 
 # --- report -----------------------------------------------------------------------------------
-out="bench/results/quality-$(date +%F).md"
+out="$(report_path quality)"
 LOAD_START="$load_start" ELAPSED=$(($(date +%s) - started)) TIME_LIMIT="$TIME_LIMIT" \
   ACUTE_TIMEOUT="$ACUTE_TIMEOUT" RUNS="$RUNS" QUICK="$QUICK" ANGLES="$ANGLES" ACUTE_BIN="$acute_bin" \
   node bench/inputs/quality_report.mjs --work "$WORK" --out "$out"

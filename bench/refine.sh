@@ -27,6 +27,8 @@
 # is killed at twice that + 10 s); REFINE_QUICK=1: one run each, no CG:SHOP section.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+# shellcheck source=bench/common.sh
+source bench/common.sh
 
 RUNS="${REFINE_RUNS:-3}"
 CGSHOP_RUNS="${CGSHOP_RUNS:-3}"
@@ -204,7 +206,7 @@ if [[ "$QUICK" != 1 && -d "$SHARED/cgshop2025" ]]; then
 fi
 
 # --- report -----------------------------------------------------------------------------------
-out="bench/results/refine-$(date +%F).md"
+out="$(report_path refine)"
 QUALITY_ANGLES="$QUALITY_ANGLES" LOAD_START="$load_start" RUNS="$RUNS" CGSHOP_RUNS="$CGSHOP_RUNS" \
   TIME_LIMIT="$TIME_LIMIT" CGSHOP_LIMIT="$CGSHOP_LIMIT" \
   node bench/inputs/report.mjs --work "$WORK" --cgshop "$cgshop_dir" --out "$out"

@@ -13,6 +13,8 @@
 # built yet, a run that fails) shows as "n/a" and the rest still runs.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+# shellcheck source=bench/common.sh
+source bench/common.sh
 
 RUNS=3
 BENCH_REQUIREMENTS=(
@@ -145,7 +147,7 @@ cgal_pkg=$(dpkg-query -W -f '${Version}' libcgal-dev 2>/dev/null || echo "?")
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo "?")
 if [[ -n "$(git status --porcelain -- core 2>/dev/null)" ]]; then commit="$commit + uncommitted core changes"; fi
 today=$(date +%F)
-out="bench/results/core-$today.md"
+out="$(report_path core)"
 
 {
   echo "# acutemesh vs CGAL: Delaunay and constrained Delaunay ($today)"

@@ -17,6 +17,8 @@
 # WASM_BENCH_RUNS (default 10) repeats for the refinement inputs; the 10^6-point case uses 3.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+# shellcheck source=bench/common.sh
+source bench/common.sh
 
 RUNS="${WASM_BENCH_RUNS:-10}"
 note() { echo "bench:wasm: $*" >&2; }
@@ -40,7 +42,7 @@ if [[ ! -s bench/work/uniform-1e6.node ]]; then
   mv bench/work/uniform-1e6.node.tmp bench/work/uniform-1e6.node
 fi
 
-out="bench/results/wasm-$(date +%F).md"
+out="$(report_path wasm)"
 EMCC_VERSION="$(emcc --version | head -n1 | grep -oE '[0-9]+\.[0-9]+\.[0-9]+' | head -n1)" WASM_BENCH_RUNS="$RUNS" \
   node bench/wasm.mjs "$NATIVE" "$out"
 echo
