@@ -18,15 +18,23 @@
 #     once through the npm package (dist/, WebAssembly in Node; bench/inputs/countries_wasm.mjs)
 #     when dist/ is built (`bash scripts/build.sh --package`), not for Canada unless
 #     COUNTRIES_WASM_ALL=1;
-#  5. bench/inputs/countries_report.mjs writes bench/results/countries-YYYY-MM-DD.md, printed here.
+#  5. bench/inputs/countries_report.mjs writes bench/results/countries-YYYY-MM-DD.md (-2, -3, ...
+#     for a later run the same day), printed here.
 #
-# BENCH_QUICK=1 skips Canada; COUNTRIES="gr no" runs just those; COUNTRIES_OPTIMIZE=S adds one
-# acute and one non-obtuse run with `--optimize S` per country (issue 27: the search by parts). A run cut by its --time-limit shows as "cut"; one killed (at twice
-# the limit + 60 s) or failing shows its exit status and first error line.
+# BENCH_QUICK=1 skips Canada; COUNTRIES="gr no" runs just those; COUNTRIES_OPTIMIZE=S (whole
+# seconds) adds one acute and one non-obtuse run with `--optimize S` per country (issue 27: the
+# search by parts). A run cut by its --time-limit shows as "cut"; one killed (at twice the limit
+# + 60 s) or failing shows its exit status and first error line.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # shellcheck source=bench/common.sh
 source bench/common.sh
+
+note() { echo "bench:countries: $*" >&2; }
+if [[ -n "${COUNTRIES_OPTIMIZE:-}" && ! "$COUNTRIES_OPTIMIZE" =~ ^[1-9][0-9]*$ ]]; then
+  note "COUNTRIES_OPTIMIZE must be whole seconds, 1 or more, not '$COUNTRIES_OPTIMIZE'"
+  exit 2
+fi
 
 COUNTRIES_REQUIREMENTS=(
   "/usr/bin/gmt:gmt"
@@ -37,7 +45,6 @@ COUNTRIES_REQUIREMENTS=(
 )
 bash scripts/setup.sh --only "${COUNTRIES_REQUIREMENTS[@]}"
 
-note() { echo "bench:countries: $*" >&2; }
 WORK=bench/work/countries
 RUNDIR="$WORK/runs"
 mkdir -p "$WORK" bench/results build
