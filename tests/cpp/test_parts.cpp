@@ -3,6 +3,7 @@
 // cancel must still leave every part covered.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -149,7 +150,7 @@ TEST(Parts, CancelledRunStillCoversEveryPart) {
 }
 
 // Options::optimize runs part by part: each part's search has its share of the seconds, so the
-// run ends at about its time with fewer points than without it, covered and certified; with
+// run takes about those seconds longer, with fewer points than without it, covered and certified; with
 // tries instead of seconds the mesh is the same on one thread as on two while no part weighs
 // more than a thread's share (each part then runs one chain).
 TEST(Parts, OptimizeByPartsOnAnyThreads) {
@@ -166,7 +167,7 @@ TEST(Parts, OptimizeByPartsOnAnyThreads) {
     ASSERT_EQ(base.status, Status::Ok) << nameOf(mode) << ": " << base.message;
     Options search = o;
     if (mode == Mode::NonObtuse) {
-      search.optimize = 0.5;
+      search.optimize = 1;
     } else {
       search.optimizeTries = 2;
     }
@@ -182,8 +183,10 @@ TEST(Parts, OptimizeByPartsOnAnyThreads) {
       EXPECT_EQ(w.find("optimize"), std::string::npos) << nameOf(mode) << ": " << w;
     EXPECT_LT(r.stats.steiner, base.stats.steiner) << nameOf(mode);
     if (mode == Mode::NonObtuse) {
-      EXPECT_GT(seconds, base.stats.seconds + 0.25) << "the parts' searches took no time";
-      EXPECT_LT(seconds, 0.5 + 2 * base.stats.seconds + 1);
+      // (The plain run timed again after: on a loaded machine one run may take twice another.)
+      const double plain = std::min(base.stats.seconds, mesh(in, o).stats.seconds);
+      EXPECT_GT(seconds, plain + 0.5) << "the parts' searches took no time";
+      EXPECT_LT(seconds, 1 + 2 * base.stats.seconds + 1);
     } else {
       search.threads = 1;
       EXPECT_TRUE(sameMesh(r.mesh, mesh(in, search).mesh)) << "one thread made another mesh";
