@@ -150,9 +150,9 @@ TEST(Parts, CancelledRunStillCoversEveryPart) {
 }
 
 // Options::optimize runs part by part: each part's search has its share of the seconds, so the
-// run takes about those seconds longer, with fewer points than without it, covered and certified; with
-// tries instead of seconds the mesh is the same on one thread as on two while no part weighs
-// more than a thread's share (each part then runs one chain).
+// run takes about those seconds longer, with fewer points than without it, covered and
+// certified; with tries instead of seconds the mesh is the same on one thread as on two while
+// no part weighs more than a thread's share (each part then runs one chain).
 TEST(Parts, OptimizeByPartsOnAnyThreads) {
   const Pslg in = archipelago();
   Options cdt;
