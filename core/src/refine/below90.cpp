@@ -114,7 +114,10 @@ RefineState qualityMesh(const RefineState& from, const Pslg& input, const Option
 // The descent (descent.h) from `s` down through the levels to `lowest`: the mesh of the
 // lowest level met, polished at that level, unless where the descent stopped is better.
 // With `graded`, the triangles too skinny for a level (an angle under 180 - 2 level) are
-// refined away before it (quality refinement, which ends for such angles).
+// refined away before it (quality refinement, which ends for such angles). The first level
+// must be met within the moves `reference` vertices give (the acute mesh's): a quality start
+// of a thin domain can have several times its points, and as many more moves, each dearer,
+// spent on a level it never meets.
 // The limits of work on `s` that may add steinerCap points, within Options::maxSteiner.
 RunLimits cappedLimits(const RefineState& s, const Pslg& input, const Options& options,
                        uint32_t steinerCap) {
@@ -128,13 +131,15 @@ RunLimits cappedLimits(const RefineState& s, const Pslg& input, const Options& o
 }
 
 Candidate descend(RefineState s, const Pslg& input, const Options& options, const Budget& budget,
-                  uint32_t steinerCap, double lowest, bool graded, double done, double share) {
+                  uint32_t reference, uint32_t steinerCap, double lowest, bool graded,
+                  double done, double share) {
   RunLimits limits = cappedLimits(s, input, options, steinerCap);
   const Strategy strategy;
   const double minEdge2 = smallestEdge2(input);
   RefineState met;
   double reached = 0;
   uint64_t moves = uint64_t(kDescentMoves + kDescentMovesPerVertex * s.T.vertexCount());
+  const uint64_t firstMoves = uint64_t(kDescentMoves + kDescentMovesPerVertex * double(reference));
   const std::vector<double> levels = levelsDownTo(lowest);
   for (size_t i = 0; i < levels.size(); ++i) {
     const double level = levels[i];
@@ -151,14 +156,18 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
     const Target target(at);
     const Job job{input, at, target, strategy, budget, &limits, minEdge2};
     Refiner refiner(s, job);
-    AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), moves);
+    const uint64_t allowed = i == 0 ? std::min(moves, firstMoves) : moves;
+    uint64_t left = allowed;
+    AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), left);
     // (Progress within the bound: the part of its rounds done, noted for the relay to send.)
     auto within = [&](double part) {
       if (ProgressRelay* relay = budget.progress())
         relay->note("improve", done + share * (double(i) + part) / double(levels.size()),
                     s.T.vertexCount());
     };
-    if (!descent.run(within)) break;
+    const bool levelMet = descent.run(within);
+    moves -= allowed - left;
+    if (!levelMet) break;
     met = s;
     reached = level;
   }
@@ -251,8 +260,8 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
       s = acute;
     }
     const double share = 1.0 / double(std::size(kStarts));
-    out = descend(std::move(s), input, opts, budget, cap, lowest, from == Start::AcuteGraded,
-                  share * double(int(from)), share);
+    out = descend(std::move(s), input, opts, budget, acute.T.vertexCount(), cap, lowest,
+                  from == Start::AcuteGraded, share * double(int(from)), share);
     return true;
   };
   // The starts two at a time, the better of each pair kept (the direct refinement meets 85
