@@ -6,6 +6,8 @@ For each input (.poly) and size (uniform, or a graded function of distance to a 
     (the function sampled on a 1-unit grid, bilinear), with --stats;
   - Gmsh 2D (`gmsh -2 -nt 1`, its default Frontal-Delaunay) on a .geo of the same domain, with
     Mesh.MeshSizeMax = H, or a MathEval background field of the same function,
+  - with $SIZES_OPTIMIZE seconds (default 5; 0 leaves these rows out): quality mode at
+    --min-angle 30 (and 33: QUALITY_ANGLES) with the same sizes, without and with --optimize,
 and measures every mesh here, the same way (meshio reads Gmsh's .msh; acutemesh writes .msh
 too): triangles, vertices, wall seconds, smallest and largest angle, triangles with an angle
 of 90 or more, and the size ratio (the largest longest-edge / size at the centroid: <= 1 means
@@ -27,6 +29,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WORK = os.path.join(ROOT, 'bench', 'work', 'sizes')
 CLI = os.path.join(ROOT, 'build', 'acutemesh')
 GMSH_SHRINK = 1.45
+OPTIMIZE = float(os.environ.get('SIZES_OPTIMIZE', '5'))
+QUALITY_ANGLES = [30, 33]
 
 
 def read_poly(path):
@@ -174,12 +178,21 @@ def main():
                 ours_size = ['--size', base + '.size.json']
                 gmsh_size = lambda k: (f'Field[1] = MathEval;\nField[1].F = "Min({hmax}, {h0} + {g} * '
                                        f'Sqrt((x - {cx})^2 + (y - {cy})^2)) / {k}";\nBackground Field = 1;\n')
-            for mode in ['quality', 'nonobtuse', 'acute']:
-                out = f'{base}-{mode}'
-                seconds, r = run([CLI, '--mode', mode, *ours_size, '--stats', '--threads', '1',
+            runs = [('quality', [], 'acutemesh quality'), ('nonobtuse', [], 'acutemesh nonobtuse'),
+                    ('acute', [], 'acutemesh acute')]
+            if OPTIMIZE > 0:
+                runs += [(f'quality{a}', ['--min-angle', str(a)], f'acutemesh quality --min-angle {a}')
+                         for a in QUALITY_ANGLES]
+                runs += [(f'quality{a}-opt', ['--min-angle', str(a), '--optimize', str(OPTIMIZE)],
+                          f'acutemesh quality --min-angle {a} --optimize {OPTIMIZE}')
+                         for a in QUALITY_ANGLES]
+            for name, extra, tool in runs:
+                mode = name.split('-')[0].rstrip('0123456789')
+                out = f'{base}-{name}'
+                seconds, r = run([CLI, '--mode', mode, *ours_size, *extra, '--stats', '--threads', '1',
                                   '--format', 'msh', '-o', out, path])
                 stats = json.loads(r.stdout) if r.stdout.strip() else {}
-                row = {'input': label, 'case': case, 'tool': f'acutemesh {mode}', 'seconds': seconds,
+                row = {'input': label, 'case': case, 'tool': tool, 'seconds': seconds,
                        'status': stats.get('status', f'exit {r.returncode}'),
                        'certified': stats.get('certified')}
                 if r.returncode in (0, 1):
@@ -219,7 +232,8 @@ def main():
     today = datetime.date.today().isoformat()
     lines = [f'# Sizes for solvers: acutemesh and Gmsh ({today})', '',
              f'Machine: {cpu}, {os.cpu_count()} cores, {platform.system()} {platform.release()}; '
-             f'acutemesh --threads 1, Gmsh {gmsh_version} -nt 1. `npm run bench:sizes`.', '',
+             f'acutemesh --threads 1, Gmsh {gmsh_version} -nt 1. `npm run bench:sizes`'
+             + (f' (SIZES_OPTIMIZE={OPTIMIZE:g})' if OPTIMIZE != 5 else '') + '.', '',
              'Every mesh measured here the same way (meshio reads the .msh files): size ratio = the '
              'largest longest-edge over the size at the centroid (<= 1: every edge within its size); '
              '"≥ 90°" counts triangles with an angle of 90 or more (by the exact sign of a dot product). Seconds: wall time of the whole '
@@ -240,7 +254,10 @@ def main():
                      f"{r['vertices']:,} | {r['seconds']:.2f} | {r['min']:.1f} | {r['max']:.2f} | "
                      f"{r['nonAcute']:,} | {r['ratio']:.3f} |")
     os.makedirs(os.path.join(ROOT, 'bench', 'results'), exist_ok=True)
-    out = os.path.join(ROOT, 'bench', 'results', f'sizes-{today}.md')
+    # (bench/common.sh's report_path rule: a report of the same day is kept, this one is -2, -3...)
+    out, k = os.path.join(ROOT, 'bench', 'results', f'sizes-{today}.md'), 2
+    while os.path.exists(out):
+        out, k = os.path.join(ROOT, 'bench', 'results', f'sizes-{today}-{k}.md'), k + 1
     with open(out, 'w') as f:
         f.write('\n'.join(lines) + '\n')
     print('\n'.join(lines))

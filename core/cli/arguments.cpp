@@ -340,8 +340,9 @@ std::string usageText() {
                        them as exactPoints (default for CG:SHOP input; --no-exact-feet: off)
   --time-limit S       give up after S seconds (exit status 1)
   --optimize S         after refinement, spend S seconds looking for a mesh with fewer Steiner
-                       points (acute, at any --max-angle; nonobtuse; quality without
-                       sizes): the best mesh found is kept, never one with more points
+                       points (acute, at any --max-angle; nonobtuse; quality with a
+                       --min-angle, sized too): the best mesh found is kept, never one with
+                       more points
   --optimize-tries N   at most N tries of that search per thread (with no --optimize, the
                        search runs until N): the same seed, threads and N make the same mesh
                        on any machine, which seconds do not

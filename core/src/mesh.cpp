@@ -525,9 +525,8 @@ std::string checkOptions(const Options& options) {
 const char* searchLeftOut(const Options& options, const Options& target, bool refining) {
   if (!detail::searchAsked(options)) return nullptr;
   if (!refining) return "in a mode that does not refine";
-  if (target.mode == Mode::Quality &&
-      (target.maxArea > 0 || target.maxEdge > 0 || !target.size.empty() || target.minAngle == 0))
-    return "on quality meshes with sizes or an area bound";
+  if (target.mode == Mode::Quality && target.minAngle == 0)
+    return "on quality meshes without a minimum angle";
   return nullptr;
 }
 

@@ -3,6 +3,7 @@
 // is certified where the mode certifies, and has no more Steiner points than refinement made.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -148,10 +149,13 @@ TEST(Optimize, SaysWhereItDoesNotRunAndRejectsBadSeconds) {
   EXPECT_FALSE(warnedOf(mesh(in.pslg, o)));
   o.mode = Mode::Quality;
   o.maxAngle = 90;
-  o.maxArea = 0.01;
+  o.maxArea = 0.01;  // (area refinement alone: no point count to lower)
   EXPECT_TRUE(warnedOf(mesh(in.pslg, o)));
+  o.minAngle = 30;
+  EXPECT_FALSE(warnedOf(mesh(in.pslg, o)));
   o.mode = Mode::NonObtuse;
   o.maxArea = 0;
+  o.minAngle = 0;
   EXPECT_FALSE(warnedOf(mesh(in.pslg, o)));
   o.mode = Mode::Cdt;
   o.optimize = 0;
@@ -269,4 +273,38 @@ TEST(Optimize, AutoKeepsTheBoundReached) {
   EXPECT_LE(r.stats.angleBound, base.stats.angleBound);
   EXPECT_LE(r.stats.steiner, base.stats.steiner);
   for (const std::string& w : r.stats.warnings) ADD_FAILURE() << w;
+}
+
+// Quality meshes with sizes: the search (and the polish it brings, which sized quality meshes
+// do not get otherwise) takes points out where the minimum angle and every size still hold.
+TEST(Optimize, QualityWithSizesKeepsThem) {
+  const Input in = fixtures::load(fixtures::kData + "/plate.poly");  // 200 x 100
+  for (int sized = 0; sized < 2; ++sized) {
+    Options o;
+    o.mode = Mode::Quality;
+    o.minAngle = 30;
+    (sized ? o.maxEdge : o.maxArea) = sized ? 8 : 30;
+    const std::string what = sized ? "maxEdge 8" : "maxArea 30";
+    const Result base = mesh(in.pslg, o);
+    ASSERT_EQ(base.status, Status::Ok) << what << ": " << base.message;
+    o.optimizeTries = 1;
+    const Result r = mesh(in.pslg, o);
+    ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+    expectGood(in.pslg, o, r, what);
+    if (o.maxEdge > 0) {
+      EXPECT_GT(r.stats.sizeRatio, 0) << what;
+      EXPECT_LE(r.stats.sizeRatio, 1) << what;
+    } else {
+      double largest = 0;  // (twice the area)
+      for (size_t t = 0; t < r.mesh.triangles.size(); t += 3) {
+        const double* a = &r.mesh.points[2 * r.mesh.triangles[t]];
+        const double* b = &r.mesh.points[2 * r.mesh.triangles[t + 1]];
+        const double* c = &r.mesh.points[2 * r.mesh.triangles[t + 2]];
+        largest = std::max(largest, (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+      }
+      EXPECT_LE(largest / 2, o.maxArea) << what;
+    }
+    EXPECT_LT(double(r.stats.steiner), 0.95 * double(base.stats.steiner)) << what;
+    for (const std::string& w : r.stats.warnings) ADD_FAILURE() << what << ": " << w;
+  }
 }

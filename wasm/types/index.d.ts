@@ -182,9 +182,9 @@ export interface MeshOptions {
   /**
    * Seconds to spend after refinement looking for a mesh with fewer Steiner points (0: none):
    * an anytime search that keeps the best mesh meeting the target and returns it when the time
-   * is up (or at timeLimit), never one with more points. Acute (at 90 or a bound below it, not
-   * 'auto'), non-obtuse, and quality without sizes; on the threads of a native build, one chain
-   * in WebAssembly.
+   * is up (or at timeLimit), never one with more points. Acute (at 90, a bound below it or
+   * 'auto', keeping the bound), non-obtuse, and quality with a minAngle (sized too); on the
+   * threads of a native build, one chain in WebAssembly.
    */
   optimize?: number;
   /**

@@ -135,8 +135,9 @@ struct Options {
   // that keeps the best mesh meeting the target and returns it when the time is up, at
   // timeLimit or on a cancel, never one with more points than refinement made. Acute (at a
   // bound below 90 too, which it keeps; with kAutoMaxAngle, the bound reached), non-obtuse,
-  // and quality without sizes. A domain meshed by parts shares the seconds out among its
-  // parts by their size.
+  // and quality with a minAngle (with sizes too: their polish, which sized quality meshes get
+  // only with the search, counts within the seconds). A domain meshed by parts shares the
+  // seconds out among its parts by their size.
   double optimize = 0.0;
   // Tries of that search per thread (by parts: per part and thread) at most (0: no cap);
   // either this or optimize starts it.

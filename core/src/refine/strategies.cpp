@@ -382,13 +382,21 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
       best.met || (best.result.ok() && !best.refiner().repairs().missesBeyondLeft());
   const bool search = settled && searchAsked(options) && quality == QualityRun::Mesh &&
                       target.countsPoints() && !target.strictMax;
+  Options searchFor = options;
   {
     const ProgressRelay::Part part(budget.progress(), 0, search ? kPolishBeforeSearch : 1);
+    const double before = budget.elapsed();
     if (settled) best.refiner().polish();
+    // A sized quality mesh is polished only for the search (Target::countsPoints): its polish
+    // counts within the seconds asked, and may take them all.
+    if (search && !target.boundsLargest() && target.sized() && options.optimize > 0) {
+      searchFor.optimize = options.optimize - (budget.elapsed() - before);
+      if (searchFor.optimize <= 0) searchFor.optimize = 0, searchFor.optimizeTries = 0;
+    }
   }
-  if (search) {
+  if (search && searchAsked(searchFor)) {
     const ProgressRelay::Part part(budget.progress(), kPolishBeforeSearch, 1);
-    searchFewerPoints(best.state(), best.refiner(), best.job(), options);
+    searchFewerPoints(best.state(), best.refiner(), best.job(), searchFor);
   }
   RefineOutcome outcome;
   outcome.met = best.met;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "../build.h"
+
 namespace acutemesh::detail {
 
 Target::Target(const Options& options)
@@ -14,7 +16,8 @@ Target::Target(const Options& options)
       cosQuality(portableCos(std::min(options.minAngle + kQualityRoom, 60.0) * kDegree)),
       minAngle(options.minAngle),
       maxArea(options.maxArea),
-      sizes(options) {}
+      sizes(options),
+      searches(searchAsked(options)) {}
 
 int Target::footCorners(const RefineState& s, uint32_t t) const {
   int mask = 0;

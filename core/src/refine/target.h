@@ -50,13 +50,15 @@ class Target {
   // Acute or non-obtuse: a bound on the largest angle, where the point count is the score.
   bool boundsLargest() const { return acute || nonObtuse; }
   // Where the point count is the score, and the points not needed are removed and the mesh
-  // polished: a largest-angle bound, or a smallest angle without sizes (quality mode; with
-  // sizes or an area bound most points are the sizes' own and removals would cost time only),
-  // unless the quality mesh is only a start for another search (QualityRun::Start).
+  // polished: a largest-angle bound, or a smallest angle (quality mode) without sizes or with
+  // Options::optimize (with sizes or an area bound most points are the sizes' own, and the
+  // polish takes seconds where refinement takes milliseconds: only when asked for), unless
+  // the quality mesh is only a start for another search (QualityRun::Start).
   bool countsPoints() const {
-    return boundsLargest() || (qualityCounts && minAngle > 0 && !sized());
+    return boundsLargest() || (qualityCounts && minAngle > 0 && (!sized() || searches));
   }
   bool qualityCounts = true;  // (refineWithStrategies' QualityRun)
+  bool searches = false;      // Options::optimize asked for
   // The angle whose dot product (of its two edges) is d breaks the largest-angle bound at 90
   // degrees: obtuse for non-obtuse, right or obtuse for acute.
   bool tooLarge(double d) const { return nonObtuse ? d < 0 : d <= 0; }
