@@ -453,6 +453,36 @@ TEST(Sizes, SizeFiles) {
 
 // Every fixture of tests/data (.poly) in every refining mode with a max edge of a sixteenth
 // of its box: every edge within it, the angle target met.
+// Inside an input corner below the minimum angle, quality refinement leaves its skinny
+// triangles (they cannot meet the angle), but not one too big for its size or area bound.
+TEST(Sizes, MetInsideSmallInputAngles) {
+  const Pslg in = fixtures::load(fixtures::kData + "/angles/wedge-20.poly").pslg;  // 10 long
+  for (int area = 0; area < 2; ++area) {
+    Options o;
+    o.mode = Mode::Quality;
+    o.minAngle = 30;
+    (area ? o.maxArea : o.maxEdge) = area ? 0.05 : 0.5;
+    const std::string what = area ? "maxArea 0.05" : "maxEdge 0.5";
+    const Result r = mesh(in, o);
+    EXPECT_EQ(r.status, Status::TargetNotMet) << what << ": " << r.message;  // (the 20 degrees)
+    EXPECT_EQ(fixtures::validationErrors(in, o, r.mesh), "") << what;
+    for (size_t t = 0; t < r.mesh.triangles.size(); t += 3) {
+      const double* a = &r.mesh.points[2 * r.mesh.triangles[t]];
+      const double* b = &r.mesh.points[2 * r.mesh.triangles[t + 1]];
+      const double* c = &r.mesh.points[2 * r.mesh.triangles[t + 2]];
+      const double twice = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+      if (area) {
+        ASSERT_LE(twice / 2, 0.05) << what << ", triangle " << t / 3;
+      }
+    }
+    if (!area) {
+      // (Segment pieces of exactly the size, 10 / 20: a rounding either way.)
+      EXPECT_LE(r.stats.sizeRatio, 1) << what;
+      EXPECT_LE(worstRatio(r.mesh, [](double, double) { return 0.5; }), 1 + 1e-12) << what;
+    }
+  }
+}
+
 TEST(Sizes, EveryFixtureMeetsMaxEdge) {
   for (const char* name : {"A.poly", "plate.poly", "naca0012.poly", "io/marked-regions.poly", "io/regions.poly", "io/enclave.poly"}) {
     const Pslg in = fixtures::load(fixtures::kData + "/" + name).pslg;

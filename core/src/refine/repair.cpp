@@ -61,10 +61,14 @@ bool Repair::repair(uint32_t t, Corner c, size_t weighed) {
     return insertion_.insertSparingSegments(t, candidates_, true);
   }
   if (!c.area) {
-    // (Left for the stats to count. Not in below90's quality starts, tuned without it.)
-    if (target.qualityCounts && acrossSmallInputAngle(t)) return false;
-    qualityPoints(s_, t, target.cosQuality, candidates_);
-    return insertion_.insertSparingSegments(t, candidates_, false);
+    // (Left for the stats to count, unless it is too big as well: sizes have a floor, so their
+    // splits end. Not in below90's quality starts, tuned without it.)
+    if (target.qualityCounts && acrossSmallInputAngle(t)) {
+      if (!target.tooBig(s_, t)) return false;
+    } else {
+      qualityPoints(s_, t, target.cosQuality, candidates_);
+      return insertion_.insertSparingSegments(t, candidates_, false);
+    }
   }
   const uint32_t* v = &T.tri[3 * t];
   double x[2];
@@ -126,7 +130,9 @@ bool Repair::missesBeyondLeft() const {
     if (!s_.T.inDomain(t)) continue;
     const Corner c = target.worstCorner(s_, t);
     if (c.k < 0) continue;
-    if (c.large || c.area || !target.qualityCounts || !acrossSmallInputAngle(t)) return true;
+    if (c.large || c.area || !target.qualityCounts || !acrossSmallInputAngle(t) ||
+        target.tooBig(s_, t))
+      return true;
   }
   return false;
 }

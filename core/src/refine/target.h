@@ -75,6 +75,16 @@ class Target {
   // (RefineState::footOf), between a piece of its segment and the edge to that vertex.
   // kNearFoot set: some vertex of t stands for a foot.
   int footCorners(const RefineState& s, uint32_t t) const;
+  // The triangle p[0], p[1], p[2] is larger than its area bound or size allows.
+  bool tooBig(const double* const p[3]) const {
+    return (maxArea > 0 && 0.5 * std::fabs(orient2d(p[0], p[1], p[2])) > maxArea) ||
+           (sizes.any() && sizes.ratio(p[0], p[1], p[2]) > 1);
+  }
+  bool tooBig(const RefineState& s, uint32_t t) const {
+    const uint32_t* v = &s.T.tri[3 * t];
+    const double* p[3] = {s.P(v[0]), s.P(v[1]), s.P(v[2])};
+    return tooBig(p);
+  }
   // Triangle slot t is a triangle of the domain that misses the target.
   bool misses(const RefineState& s, uint32_t t) const {
     return s.T.inDomain(t) && worstCorner(s, t).k >= 0;
@@ -116,11 +126,7 @@ inline Corner Target::worstCorner(const double* const p[3], int footCorners) con
       if (dot > cosMin * std::sqrt(dist2(a, b) * dist2(a, c))) return {k, false};
     }
   }
-  if (maxArea > 0) {
-    double area = 0.5 * std::fabs(orient2d(p[0], p[1], p[2]));
-    if (area > maxArea) return {0, false, true};
-  }
-  if (sizes.any() && sizes.ratio(p[0], p[1], p[2]) > 1) return {0, false, true};
+  if (tooBig(p)) return {0, false, true};
   return {};
 }
 
