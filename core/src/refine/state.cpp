@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "../rounding.h"
+
 namespace acutemesh::detail {
 
 RefineState RefineState::start(Triangulation T, size_t inputVertices) {
@@ -13,6 +15,29 @@ RefineState RefineState::start(Triangulation T, size_t inputVertices) {
   s.footOf.assign(s.T.vertexCount(), kNone);
   s.fanRadius.assign(inputVertices, 0);
   Triangulation& t = s.T;
+  // A vertex within rounding reach of a hull edge, with only triangles outside the domain
+  // between them (a turned copy of collinear input), joins the hull: the slivers there leave
+  // no double to split a segment along it, and flips outside only pass them around.
+  std::vector<uint32_t> hull;
+  auto pushHullEdge = [&](uint32_t g) {  // the hull edge of ghost triangle g
+    for (uint32_t k = 0; k < 3; ++k)
+      if (t.tri[3 * g + k] != kGhost && t.tri[3 * g + (k + 1) % 3] != kGhost)
+        hull.push_back(3 * g + k);
+  };
+  for (uint32_t g = 0; g < t.triangleSlots(); ++g)
+    if (!t.isFree(g) && t.isGhost(g)) pushHullEdge(g);
+  while (!hull.empty()) {
+    const uint32_t e = hull.back();
+    hull.pop_back();
+    const uint32_t h = t.opp[e];  // the same edge in the triangle inside the hull
+    if (t.isGhost(h / 3) || t.inside[h / 3] || t.isFixed(h)) continue;
+    if (!nearSegment(t.point(t.tri[h]), t.point(t.tri[next(h)]), t.point(t.tri[prev(h)])))
+      continue;
+    const uint32_t inner = h / 3, ghost = e / 3;
+    t.flip(h);
+    pushHullEdge(inner);
+    pushHullEdge(ghost);
+  }
   for (uint32_t e = 0; e < 3 * t.triangleSlots(); ++e)
     if (!t.isFree(e / 3) && t.inside[e / 3] && !t.isFixed(e) && !t.inside[t.opp[e] / 3])
       t.fixEdge(e, 0);
