@@ -2,7 +2,7 @@
 //
 // Each input segment is inserted as a chain of fixed edges. Walking from one end toward the
 // other, every decision is an exact orientation test: a vertex exactly on the segment splits
-// it there, an already fixed edge crossed by it yields a new vertex at the crossing (both
+// it there (so does an input point that ends no segment within rounding reach of it), an already fixed edge crossed by it yields a new vertex at the crossing (both
 // segments then pass through that vertex), and otherwise the triangles it crosses give way to
 // the constrained Delaunay triangulations of its two sides (Triangulation::
 // insertEdgeThroughCavity), or, where a side is not a simple chain, the crossed edges are
@@ -66,6 +66,23 @@ class SegmentInserter {
     const double *a = segmentEnd(seg, 0), *b = segmentEnd(seg, 1);
     return orient2d(a, b, P(y)) == 0 && dot2d(P(y), a, b) < 0;
   }
+  // Whether input vertex y, the end of no segment, lies within rounding reach of the piece's
+  // segment, strictly between the piece's ends: a turned or otherwise rounded copy of a point
+  // on the segment (a CG:SHOP point set's points on its hull). It splits the segment as one
+  // exactly on it would; passed by, it would stand a rounding off a segment that refinement
+  // could then never split beside it. (A segment's end that near stays apart: snapped, a
+  // needle's tip would fold the needle away.)
+  bool nearlyOnPiece(const Piece& piece, uint32_t y) {
+    if (y >= inputCount_) return false;
+    if (segmentEnds_.empty()) {
+      segmentEnds_.assign(inputCount_, 0);
+      for (uint32_t end : input_.segments) segmentEnds_[canonical_[end]] = 1;
+    }
+    const double *a = segmentEnd(piece.seg, 0), *b = segmentEnd(piece.seg, 1);
+    return !segmentEnds_[y] && nearSegment(a, b, P(y)) && dot2d(P(y), a, b) < 0 &&
+           dot2d(P(y), P(piece.from), P(piece.to)) < 0;
+  }
+  std::vector<uint8_t> segmentEnds_;  // per input vertex (made when first asked)
   // Returns the half-edge leaving u toward the segment's interior: an edge u->w with w on the
   // segment (*collinear set), or the edge w->x of the triangle (u, w, x) that the segment
   // crosses first.
@@ -270,6 +287,16 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
                                                   std::to_string(u) + " toward " +
                                                   std::to_string(v)};
     if (collinear) {
+      // (An edge already: a vertex a rounding off it, either side, still splits it.)
+      uint32_t near = kNone;
+      if (T_.tri[next(h)] == v)
+        for (uint32_t y : {T_.tri[prev(h)], T_.tri[prev(T_.opp[h])]})
+          if (near == kNone && y != kGhost && nearlyOnPiece(piece, y)) near = y;
+      if (near != kNone) {
+        todo_.push_back({near, v, piece.dir, piece.seg});
+        todo_.push_back({u, near, piece.dir, piece.seg});
+        continue;
+      }
       T_.fixEdge(h, piece.dir, piece.seg);
       todo_.push_back({T_.tri[next(h)], v, piece.dir, piece.seg});
       continue;
@@ -283,7 +310,7 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
     uint32_t end = kNone;
     bool split = false;
     for (uint32_t y : {T_.tri[h], T_.tri[next(h)]})
-      if (rounded && !split && onSegment(piece.seg, y)) {
+      if (!split && ((rounded && onSegment(piece.seg, y)) || nearlyOnPiece(piece, y))) {
         todo_.push_back({y, v, piece.dir, piece.seg});
         todo_.push_back({u, y, piece.dir, piece.seg});
         split = true;
@@ -309,7 +336,7 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
         end = y;
         break;
       }
-      if (rounded && onSegment(piece.seg, y)) {
+      if ((rounded && onSegment(piece.seg, y)) || nearlyOnPiece(piece, y)) {
         todo_.push_back({y, v, piece.dir, piece.seg});
         todo_.push_back({u, y, piece.dir, piece.seg});
         split = true;
