@@ -87,6 +87,18 @@ inline acutemesh::Pslg archipelago(int count, int corners, double (*radius)(int,
   return in;
 }
 
+// The largest area of the mesh's triangles (as doubles compute it).
+inline double largestTriangleArea(const acutemesh::Mesh& m) {
+  double largest = 0;
+  for (size_t t = 0; t < m.triangles.size(); t += 3) {
+    const double* a = &m.points[2 * m.triangles[t]];
+    const double* b = &m.points[2 * m.triangles[t + 1]];
+    const double* c = &m.points[2 * m.triangles[t + 2]];
+    largest = std::max(largest, ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2);
+  }
+  return largest;
+}
+
 // validate()'s errors, one per line; empty when the mesh is valid.
 inline std::string validationErrors(const acutemesh::Pslg& in, const acutemesh::Options& o,
                                     const acutemesh::Mesh& mesh) {

@@ -295,14 +295,7 @@ TEST(Optimize, QualityWithSizesKeepsThem) {
       EXPECT_GT(r.stats.sizeRatio, 0) << what;
       EXPECT_LE(r.stats.sizeRatio, 1) << what;
     } else {
-      double largest = 0;  // (twice the area)
-      for (size_t t = 0; t < r.mesh.triangles.size(); t += 3) {
-        const double* a = &r.mesh.points[2 * r.mesh.triangles[t]];
-        const double* b = &r.mesh.points[2 * r.mesh.triangles[t + 1]];
-        const double* c = &r.mesh.points[2 * r.mesh.triangles[t + 2]];
-        largest = std::max(largest, (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-      }
-      EXPECT_LE(largest / 2, o.maxArea) << what;
+      EXPECT_LE(fixtures::largestTriangleArea(r.mesh), o.maxArea) << what;
     }
     EXPECT_LT(double(r.stats.steiner), 0.95 * double(base.stats.steiner)) << what;
     for (const std::string& w : r.stats.warnings) ADD_FAILURE() << what << ": " << w;
