@@ -2,8 +2,9 @@
 //
 // Each input segment is inserted as a chain of fixed edges. Walking from one end toward the
 // other, every decision is an exact orientation test: a vertex exactly on the segment splits
-// it there (so does an input point that ends no segment within rounding reach of it), an already fixed edge crossed by it yields a new vertex at the crossing (both
-// segments then pass through that vertex), and otherwise the triangles it crosses give way to
+// it there (so does an input point that ends no segment within rounding reach of it), an
+// already fixed edge crossed by it yields a new vertex at the crossing (both segments then
+// pass through that vertex), and otherwise the triangles it crosses give way to
 // the constrained Delaunay triangulations of its two sides (Triangulation::
 // insertEdgeThroughCavity), or, where a side is not a simple chain, the crossed edges are
 // flipped away (Sloan's method) and Delaunay is restored with Lawson flips.

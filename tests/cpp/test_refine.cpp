@@ -135,8 +135,10 @@ TEST(Refine, EveryModeOnTheLetterATurned) {
       Options o;
       o.mode = mode;
       const Result r = mesh(in, o);
-      const std::string what = "A.poly turned " + std::to_string(degrees) + " " +
-                               (mode == Mode::Acute ? "acute" : mode == Mode::NonObtuse ? "nonobtuse" : "quality");
+      const char* name = mode == Mode::Acute       ? "acute"
+                         : mode == Mode::NonObtuse ? "nonobtuse"
+                                                   : "quality";
+      const std::string what = "A.poly turned " + std::to_string(degrees) + " " + name;
       ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
       expectValid(in, o, r, what);
       EXPECT_TRUE(r.stats.targetMet) << what;
