@@ -11,10 +11,10 @@
 # its own), the timing tests of progress and of the search's time limit (a try under ASan,
 # beside another CI run, once ran 1.2 s past the limit the test allows 1 s over), and the
 # heaviest runs that take the code paths the rest take, on more data (the 150 CG:SHOP
-# instances, Lake Superior below 90 degrees, the thread-count sameness checks). Under ASan they took 7 of the stage's 14 minutes. Also the
-# labels' and sizes' by-parts runs on several thread counts (56 s under ASan: the parts'
-# threads stay in through Parts.Archipelago...) and the CLI's shell test (40 s: its parsing is
-# the fuzz stage's).
+# instances, Lake Superior below 90 degrees, the thread-count sameness checks). Under ASan
+# they took 7 of the stage's 14 minutes. Also the labels' and sizes' by-parts runs on several
+# thread counts (56 s under ASan: the parts' threads stay in through Parts.Archipelago...) and
+# the CLI's shell test (40 s: its parsing is the fuzz stage's).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
