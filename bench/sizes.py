@@ -178,16 +178,14 @@ def main():
                 ours_size = ['--size', base + '.size.json']
                 gmsh_size = lambda k: (f'Field[1] = MathEval;\nField[1].F = "Min({hmax}, {h0} + {g} * '
                                        f'Sqrt((x - {cx})^2 + (y - {cy})^2)) / {k}";\nBackground Field = 1;\n')
-            runs = [('quality', [], 'acutemesh quality'), ('nonobtuse', [], 'acutemesh nonobtuse'),
-                    ('acute', [], 'acutemesh acute')]
+            # (mode, options besides the sizes, the file name's suffix)
+            runs = [(mode, [], mode) for mode in ['quality', 'nonobtuse', 'acute']]
             if OPTIMIZE > 0:
-                runs += [(f'quality{a}', ['--min-angle', str(a)], f'acutemesh quality --min-angle {a}')
-                         for a in QUALITY_ANGLES]
-                runs += [(f'quality{a}-opt', ['--min-angle', str(a), '--optimize', str(OPTIMIZE)],
-                          f'acutemesh quality --min-angle {a} --optimize {OPTIMIZE}')
-                         for a in QUALITY_ANGLES]
-            for name, extra, tool in runs:
-                mode = name.split('-')[0].rstrip('0123456789')
+                runs += [('quality', ['--min-angle', str(a)], f'quality{a}') for a in QUALITY_ANGLES]
+                runs += [('quality', ['--min-angle', str(a), '--optimize', f'{OPTIMIZE:g}'],
+                          f'quality{a}-opt') for a in QUALITY_ANGLES]
+            for mode, extra, name in runs:
+                tool = ' '.join(['acutemesh', mode, *extra])
                 out = f'{base}-{name}'
                 seconds, r = run([CLI, '--mode', mode, *ours_size, *extra, '--stats', '--threads', '1',
                                   '--format', 'msh', '-o', out, path])

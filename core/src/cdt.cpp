@@ -84,6 +84,11 @@ class SegmentInserter {
            dot2d(P(y), P(piece.from), P(piece.to)) < 0;
   }
   std::vector<uint8_t> segmentEnds_;  // per input vertex (made when first asked)
+  // The piece is to run through vertex y: its two halves, the first on top.
+  void splitAt(const Piece& piece, uint32_t y) {
+    todo_.push_back({y, piece.to, piece.dir, piece.seg});
+    todo_.push_back({piece.from, y, piece.dir, piece.seg});
+  }
   // Returns the half-edge leaving u toward the segment's interior: an edge u->w with w on the
   // segment (*collinear set), or the edge w->x of the triangle (u, w, x) that the segment
   // crosses first.
@@ -292,10 +297,9 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
       uint32_t near = kNone;
       if (T_.tri[next(h)] == v)
         for (uint32_t y : {T_.tri[prev(h)], T_.tri[prev(T_.opp[h])]})
-          if (near == kNone && y != kGhost && nearlyOnPiece(piece, y)) near = y;
+          if (near == kNone && nearlyOnPiece(piece, y)) near = y;  // (kGhost: no input vertex)
       if (near != kNone) {
-        todo_.push_back({near, v, piece.dir, piece.seg});
-        todo_.push_back({u, near, piece.dir, piece.seg});
+        splitAt(piece, near);
         continue;
       }
       T_.fixEdge(h, piece.dir, piece.seg);
@@ -312,8 +316,7 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
     bool split = false;
     for (uint32_t y : {T_.tri[h], T_.tri[next(h)]})
       if (!split && ((rounded && onSegment(piece.seg, y)) || nearlyOnPiece(piece, y))) {
-        todo_.push_back({y, v, piece.dir, piece.seg});
-        todo_.push_back({u, y, piece.dir, piece.seg});
+        splitAt(piece, y);
         split = true;
       }
     while (!split) {
@@ -338,8 +341,7 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
         break;
       }
       if ((rounded && onSegment(piece.seg, y)) || nearlyOnPiece(piece, y)) {
-        todo_.push_back({y, v, piece.dir, piece.seg});
-        todo_.push_back({u, y, piece.dir, piece.seg});
+        splitAt(piece, y);
         split = true;
         break;
       }
