@@ -26,6 +26,8 @@ struct Part {
   std::vector<uint32_t> origin;
   Result result;
   std::exception_ptr failure;
+  Result acute;  // below 90 degrees: the first round's mesh (runParts)
+  bool outOfTime = false;  // its run stopped at its share of the time limit
 };
 
 // Per triangle slot of the domain its part, kNone outside; parts numbered by their first slot.
@@ -123,15 +125,17 @@ class PartProgress {
       weight_[p] = double(parts[p].triangles.size()) / total;
     }
   }
-  // Options::progress for part p's run: refinement's fraction, 1 once it is done.
+  // The round of runs now going on spans [from, to] of each part's fraction.
+  void span(double from, double to) { from_ = from, to_ = to; }
+  // Options::progress for part p's run: refinement's fraction, the round's end once done.
   void noteFrom(size_t p, const Progress& report) {
     const std::string phase = report.phase;
     if ((phase == "refine" || phase == "improve") && report.fraction >= 0)
-      done_[p] = std::max(done_[p].load(), report.fraction);
+      done_[p] = std::max(done_[p].load(), from_ + (to_ - from_) * report.fraction);
     else if (phase == "output")
-      done_[p] = 1.0;
+      finish(p);
   }
-  void finish(size_t p) { done_[p] = 1.0; }
+  void finish(size_t p) { done_[p] = to_; }
   double share(size_t p) const { return weight_[p]; }
   double fraction() const {
     double sum = 0;
@@ -142,6 +146,7 @@ class PartProgress {
  private:
   std::unique_ptr<std::atomic<double>[]> done_;
   std::vector<double> weight_;
+  double from_ = 0, to_ = 1;
 };
 
 // A part's run. Memory running out on a worker thread goes to the calling thread, where
@@ -158,17 +163,20 @@ void runPart(Part& part, const Options& options) {
 #endif
 }
 
-// Runs every part's problem on `threads` threads (the calling one alone for 1), the largest
-// first so that the last to end are small; reports the whole's fraction from the calling
-// thread, which alone may call Options::progress.
-void runParts(std::vector<Part>& parts, const Options& target, const Budget& budget,
-              unsigned threads) {
+// Runs every part's problem toward `target` on `threads` threads (the calling one alone for
+// 1), the largest first so that the last to end are small; reports the whole's fraction from
+// the calling thread, which alone may call Options::progress. With `shareTime`, each part's
+// run may use its share (by weight) of the time left to the parts not yet started, and no part
+// starts once the budget is spent.
+void runRound(std::vector<Part>& parts, const Options& target, const Budget& budget,
+              unsigned threads, PartProgress& progress, bool shareTime) {
   std::vector<size_t> order(parts.size());
   for (size_t p = 0; p < parts.size(); ++p) order[p] = p;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
     return parts[a].triangles.size() > parts[b].triangles.size();
   });
-  PartProgress progress(parts);
+  std::vector<double> weightFrom(order.size() + 1, 0);  // the weight of order[k..]
+  for (size_t k = order.size(); k-- > 0;) weightFrom[k] = weightFrom[k + 1] + progress.share(order[k]);
   ProgressRelay* relay = budget.progress();
   auto report = [&] {
     if (!relay) return;
@@ -179,6 +187,10 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
   auto work = [&](bool reporting) {
     for (size_t k; (k = next++) < order.size();) {
       const size_t p = order[k];
+      if (shareTime && budget.stop()) {
+        progress.finish(p);
+        continue;
+      }
       Options options = target;
       options.fill = FillRule::NonZero;
       options.convexHull = false;
@@ -189,15 +201,18 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
       // parts' weights, each part's over the threads it has, so that the parts' searches end
       // at about the time asked; its tries (optimizeTries) are per part and thread.
       options.optimize = target.optimize * progress.share(p) * threads / options.threads;
-      if (target.timeLimit > 0)  // (what is left of it; 0 would mean none)
-        options.timeLimit = std::max(target.timeLimit - budget.elapsed(), 1e-9);
+      if (target.timeLimit > 0) {  // (what is left of it; 0 would mean none)
+        const double left = std::max(target.timeLimit - budget.elapsed(), 1e-9);
+        options.timeLimit = shareTime ? left * progress.share(p) / weightFrom[k] : left;
+      }
       options.progress = [&, p, reporting](const Progress& r) {
         progress.noteFrom(p, r);
         if (reporting) report();
       };
       runPart(parts[p], options);
+      parts[p].outOfTime = options.timeLimit > 0 && parts[p].result.status != Status::Ok &&
+                           parts[p].result.stats.seconds >= options.timeLimit;
       progress.finish(p);
-      parts[p].pslg = Pslg{};  // (no longer needed)
       if (reporting) report();
     }
   };
@@ -224,6 +239,38 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
 #endif
   (void)threads;
   work(true);
+}
+
+// Whether a part's run ended with an acute mesh (the first certificate of a bound below 90).
+bool isAcute(const Result& r) {
+  return !r.mesh.triangles.empty() && r.stats.certified && r.stats.nonAcute == 0;
+}
+
+// Runs every part's problem (runRound). A bound below 90 degrees (or auto) goes in two rounds:
+// every part's acute mesh first (quick), then each part's descent toward the bound in its
+// share of the time left; a part whose descent a time limit or a cancel cut short before it
+// had an acute mesh keeps the first round's. (In one round, the first parts' descents could
+// spend the time and leave the last ones their CDT.)
+void runParts(std::vector<Part>& parts, const Options& target, const Budget& budget,
+              unsigned threads) {
+  PartProgress progress(parts);
+  if (target.mode != Mode::Acute || target.maxAngle >= 90) {
+    runRound(parts, target, budget, threads, progress, false);
+    return;
+  }
+  Options acute = target;
+  acute.maxAngle = 90;
+  acute.optimize = 0, acute.optimizeTries = 0;
+  progress.span(0, kPartsAcuteShare);
+  runRound(parts, acute, budget, threads, progress, false);
+  for (Part& part : parts) part.acute = std::move(part.result), part.result = Result{};
+  progress.span(kPartsAcuteShare, 1);
+  runRound(parts, target, budget, threads, progress, true);
+  for (Part& part : parts) {
+    if (isAcute(part.result) || part.acute.mesh.triangles.empty()) continue;
+    part.result = std::move(part.acute);
+    part.result.stats.targetMet = false;  // (its target was 90 degrees)
+  }
 }
 
 }  // namespace
@@ -277,7 +324,7 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     }
     return index[v];
   };
-  bool missed = false, cancelled = false;
+  bool missed = false, cancelled = false, outOfTime = budget.outOfTime();
   // The whole's twins from the parts' (each part's run leaves its store's in
   // Mesh::adjacency.halfedges; no edge joins two parts). A part still in T's triangles has
   // none: the output labels then find them.
@@ -288,6 +335,7 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     const Mesh& m = part.result.mesh;
     missed |= !part.result.stats.targetMet || m.triangles.empty();
     cancelled |= part.result.status == Status::Cancelled;
+    outOfTime |= part.outOfTime;
     twinsKnown &= !m.triangles.empty() && m.adjacency.halfedges.size() == m.triangles.size();
     if (twinsKnown) {
       const int32_t offset = int32_t(mesh.triangles.size());
@@ -325,7 +373,7 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     result.status = Status::Cancelled;
     result.message = missed ? "cancelled before every part met the target"
                             : "cancelled while removing Steiner points; the mesh meets the target";
-  } else if (missed && budget.outOfTime()) {
+  } else if (missed && outOfTime) {
     result.status = Status::TargetNotMet;
     result.message = "time limit reached before every triangle met the target";
   }

@@ -193,3 +193,50 @@ TEST(Parts, OptimizeByPartsOnAnyThreads) {
     }
   }
 }
+
+// Below 90 degrees every part gets its acute mesh before any part's descent toward the bound
+// (parts.cpp runParts): a cancel or a time limit during the descents leaves every part acute
+// and certified, none its CDT, and says the bound was not reached.
+TEST(Parts, BelowNinetyCutShortLeavesEveryPartAcute) {
+  const Pslg in = archipelago();
+  Options cdt;
+  cdt.mode = Mode::Cdt;
+  cdt.fill = FillRule::EvenOdd;
+  const double domain = area(mesh(in, cdt).mesh);
+  Options o = cdt;
+  o.mode = Mode::Acute;
+  o.threads = 2;
+  const Result acute = mesh(in, o);
+  ASSERT_EQ(acute.status, Status::Ok) << acute.message;
+  o.maxAngle = 75;
+  auto check = [&](const Result& r, const char* how) {
+    EXPECT_FALSE(r.stats.targetMet) << how;
+    EXPECT_EQ(r.stats.nonAcute, 0u) << how << ": a part was left unrefined";
+    EXPECT_TRUE(r.stats.certified) << how;
+    Options at90 = o;
+    at90.maxAngle = 90;
+    EXPECT_EQ(fixtures::validationErrors(in, at90, r.mesh), "") << how;
+    EXPECT_NEAR(area(r.mesh), domain, 1e-12 * domain) << how << ": a part is missing";
+  };
+  {
+    // Cancelled once the parts' descents have begun (the bar past the acute meshes' tenth).
+    Options cancelled = o;
+    std::atomic<bool> cancel{false};
+    cancelled.cancel = &cancel;
+    cancelled.progress = [&](const Progress& p) {
+      if (std::strcmp(p.phase, "refine") == 0 && p.fraction > 0.11) cancel = true;
+    };
+    const Result r = mesh(in, cancelled);
+    ASSERT_EQ(r.status, Status::Cancelled) << r.message;
+    check(r, "cancel");
+  }
+  {
+    // A time limit a few times what the acute meshes take, far short of the descents'.
+    Options limited = o;
+    limited.timeLimit = std::max(0.5, 3 * acute.stats.seconds);
+    const Result r = mesh(in, limited);
+    ASSERT_EQ(r.status, Status::TargetNotMet) << r.message;
+    EXPECT_EQ(r.message.find("time limit reached"), 0u) << r.message;
+    check(r, "time limit");
+  }
+}

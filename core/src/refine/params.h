@@ -28,6 +28,9 @@ constexpr double kSureMinAngle = 40;
 // A domain of several parts with at least this many triangles is meshed part by part
 // (parts.h); below it a whole run is quick, and its meshes stay as they were.
 constexpr size_t kPartsFrom = 4096;
+// Below 90 degrees the parts' acute meshes come first (parts.cpp runParts): the share of the
+// progress bar they stand for (a descent takes ten to a hundred times as long).
+constexpr double kPartsAcuteShare = 0.1;
 
 // --- Budgets --------------------------------------------------------------------------------
 // The default Steiner budget: this many per input vertex, at least kSteinerAtLeast.
