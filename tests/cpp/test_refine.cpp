@@ -263,6 +263,32 @@ TEST(Refine, QualityLeavesSmallInputAnglesAlone) {
   }
 }
 
+// The same where the small corner's vertex is given twice (a ring's point repeated, as map
+// data has it: the duplicate is merged, its two segments keep their own indices). Before the
+// corner was matched by place, the wedge took 108 Steiner points again, and on Norway's
+// outline the polish never ran (its quality mesh a third larger).
+TEST(Refine, QualityLeavesSmallInputAnglesAtARepeatedVertex) {
+  Pslg in = load(kData + "/angles/wedge-20.poly");
+  const Result once = mesh(in, [] {
+    Options o;
+    o.mode = Mode::Quality;
+    o.minAngle = 30;
+    return o;
+  }());
+  in.points.insert(in.points.end(), {in.points[0], in.points[1]});  // vertex 3: vertex 0 again
+  ASSERT_EQ(in.segments[5], 0u);
+  in.segments[5] = 3;  // (the last segment, 2 -> 0, ends at the copy)
+  Options o;
+  o.mode = Mode::Quality;
+  o.minAngle = 30;
+  const Result r = mesh(in, o);
+  EXPECT_EQ(r.status, Status::TargetNotMet) << r.message;
+  EXPECT_EQ(r.stats.duplicates, 1u);
+  expectValid(in, o, r, "wedge-20, apex twice");
+  EXPECT_EQ(r.stats.steiner, once.stats.steiner);
+  EXPECT_EQ(r.stats.missedTriangles.size(), once.stats.missedTriangles.size());
+}
+
 // Beyond 40 degrees Delaunay refinement need not terminate. 42 is reached on the fixtures (as
 // aCute reaches it); from 43 on the plate and the airfoil wander (their smallest angles sink as
 // the points run out), so after half the Steiner budget they are meshed to 40 degrees

@@ -108,11 +108,16 @@ bool Repair::acrossSmallInputAngle(uint32_t t) const {
   const Pslg& in = job_.input;
   const uint32_t a0 = in.segments[2 * size_t(sp)], a1 = in.segments[2 * size_t(sp) + 1];
   const uint32_t b0 = in.segments[2 * size_t(sq)], b1 = in.segments[2 * size_t(sq) + 1];
-  const uint32_t apex = a0 == b0 || a0 == b1 ? a0 : a1 == b0 || a1 == b1 ? a1 : kNone;
+  // (Ends compared by place: a duplicate input vertex, merged in the mesh, is another index.)
+  auto same = [&](uint32_t i, uint32_t j) {
+    return in.points[2 * size_t(i)] == in.points[2 * size_t(j)] &&
+           in.points[2 * size_t(i) + 1] == in.points[2 * size_t(j) + 1];
+  };
+  const uint32_t apex = same(a0, b0) || same(a0, b1) ? a0 : same(a1, b0) || same(a1, b1) ? a1 : kNone;
   if (apex == kNone) return false;
   const double* a = &in.points[2 * size_t(apex)];
   const double* u = &in.points[2 * size_t(apex == a0 ? a1 : a0)];
-  const double* w = &in.points[2 * size_t(apex == b0 ? b1 : b0)];
+  const double* w = &in.points[2 * size_t(same(apex, b0) ? b1 : b0)];
   const double ux = u[0] - a[0], uy = u[1] - a[1], wx = w[0] - a[0], wy = w[1] - a[1];
   const double lengths = std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
   if (!(ux * wx + uy * wy > job_.target.cosMin * lengths)) return false;
