@@ -13,6 +13,33 @@ uint32_t Triangulation::addVertex(double x, double y) {
   return vertexCount() - 1;
 }
 
+void Triangulation::undoTo(const Journal::Mark& m) {
+  Journal& j = *journal;
+  for (size_t i = j.slots.size(); i-- > m.slots;) {
+    const Journal::Slot& r = j.slots[i];
+    for (int k = 0; k < 3; ++k) {
+      const size_t e = 3 * size_t(r.t) + size_t(k);
+      tri[e] = r.tri[k], opp[e] = r.opp[k], fixed[e] = r.fixed[k];
+      if (trackWinding) wind[e] = r.wind[k];
+      if (trackSegments) segment[e] = r.segment[k];
+    }
+    if (!inside.empty()) inside[r.t] = r.inside;
+  }
+  // (A vertex added and dropped since, RefineState::dropLastVertex, is gone already.)
+  for (size_t i = j.edges.size(); i-- > m.edges;)
+    if (j.edges[i].first < vertexEdge.size()) vertexEdge[j.edges[i].first] = j.edges[i].second;
+  for (size_t i = j.points.size(); i-- > m.points;) {
+    const Journal::Point& p = j.points[i];
+    if (p.v < vertexCount()) pts[2 * size_t(p.v)] = p.xy[0], pts[2 * size_t(p.v) + 1] = p.xy[1];
+  }
+  j.slots.resize(m.slots), j.edges.resize(m.edges), j.points.resize(m.points);
+  pts.resize(2 * size_t(m.vertices));
+  vertexEdge.resize(m.vertices);
+  slots_ = m.slotCount;
+  freeSlots_ = m.freeSlots;
+  rng_ = m.rng;
+}
+
 void Triangulation::reserveTriangles(size_t count) {
   if (3 * count <= tri.size()) return;
   tri.resize(3 * count, kNone);
@@ -44,6 +71,7 @@ uint32_t Triangulation::newTriangle() {
 }
 
 void Triangulation::freeTriangle(uint32_t t) {
+  noteSlot(t);
   if (!inside.empty()) inside[t] = 0;
   for (int k = 0; k < 3; ++k) {
     tri[3 * t + k] = kNone;
@@ -55,6 +83,8 @@ void Triangulation::freeTriangle(uint32_t t) {
 
 void Triangulation::setCorners(uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
   if (touched) touched->push_back(t);
+  noteSlot(t);
+  noteEdge(a), noteEdge(b), noteEdge(c);
   uint32_t e = 3 * t;
   tri[e] = a;
   tri[e + 1] = b;
@@ -164,6 +194,7 @@ uint32_t Triangulation::splitTriangle(uint32_t t, uint32_t v) {
   uint32_t a = tri[e], b = tri[e + 1], c = tri[e + 2];
   EdgeAttr ab = attr(e), bc = attr(e + 1), ca = attr(e + 2);
   uint32_t t1 = newTriangle(), t2 = newTriangle();
+  noteSlot(t1), noteSlot(t2);
   if (!inside.empty()) inside[t1] = inside[t2] = inside[t];
   setCorners(t, a, b, v);
   setCorners(t1, b, c, v);
@@ -192,6 +223,7 @@ uint32_t Triangulation::splitEdge(uint32_t e, uint32_t v) {
   uint32_t a = tri[e], b = tri[e1], c = tri[e2], d = tri[f2];
   EdgeAttr ab = attr(e), ba = attr(f), bc = attr(e1), ca = attr(e2), ad = attr(f1), db = attr(f2);
   uint32_t t2 = newTriangle(), t3 = newTriangle();
+  for (uint32_t s : {t0, t1, t2, t3}) noteSlot(s);
   if (!inside.empty()) {
     // t0 and t1 now hold the two halves on c's side, t2 and t3 those on d's side.
     uint8_t cSide = inside[t0], dSide = inside[t1];
@@ -414,6 +446,7 @@ uint32_t Triangulation::findEdge(uint32_t a, uint32_t b) const {
 }
 
 void Triangulation::fixEdge(uint32_t e, int dir, uint32_t seg) {
+  noteSlot(e / 3), noteSlot(opp[e] / 3);
   fixed[e] = fixed[opp[e]] = 1;
   if (trackWinding) {
     wind[e] += dir;
@@ -489,6 +522,7 @@ bool Triangulation::removeVertex(uint32_t v) {
     setAttr(3 * t + i, outer[i]);
     stack.push_back(3 * t + i);
   }
+  noteEdge(v);
   vertexEdge[v] = kNone;
   legalize(stack);
   return true;
@@ -557,11 +591,12 @@ bool Triangulation::removeFromSegment(uint32_t v, uint32_t ends[2]) {
   setAttr(3 * t1 + 1, leftB);
   setAttr(3 * t2, bRight);
   setAttr(3 * t2 + 1, rightA);
-  link(3 * t1 + 2, 3 * t2 + 2);
+  link(3 * t1 + 2, 3 * t2 + 2);  // (notes t1 and t2)
   fixed[3 * t1 + 2] = fixed[3 * t2 + 2] = 1;
   if (trackWinding) wind[3 * t1 + 2] = piece.wind, wind[3 * t2 + 2] = -piece.wind;
   if (trackSegments) segment[3 * t1 + 2] = segment[3 * t2 + 2] = piece.segment;
   if (!inside.empty()) inside[t1] = insideLeft, inside[t2] = insideRight;
+  noteEdge(v);
   vertexEdge[v] = kNone;
   for (uint32_t f : {3 * t1, 3 * t1 + 1, 3 * t2, 3 * t2 + 1}) stack.push_back(f);
   legalize(stack);

@@ -35,6 +35,32 @@ struct Location {
   uint32_t vertex = kNone; // OnVertex: the vertex with exactly these coordinates
 };
 
+// What a Triangulation's writes replaced, while one is kept (Triangulation::journal): the
+// old record of each triangle slot written, the old edge of each vertex, the old place of each
+// point moved, and the fan radii (RefineState's) set. Marks nest; undoTo(mark) puts back what
+// was there at the mark, in the reverse order of the writes (a slot noted twice ends with its
+// first record), so a tried change costs what it touched, not a copy of the whole.
+struct Journal {
+  struct Slot {
+    uint32_t t, tri[3], opp[3], segment[3];
+    int32_t wind[3];
+    uint8_t fixed[3], inside;
+  };
+  struct Mark {
+    size_t slots, edges, points, radii;
+    uint32_t vertices, slotCount, rng;
+    std::vector<uint32_t> freeSlots;
+  };
+  std::vector<Slot> slots;
+  std::vector<std::pair<uint32_t, uint32_t>> edges;  // vertex, old vertexEdge
+  struct Point {
+    uint32_t v;
+    double xy[2];
+  };
+  std::vector<Point> points;
+  std::vector<std::pair<uint32_t, double>> radii;  // input vertex, old fan radius
+};
+
 class Triangulation {
  public:
   // Vertex coordinates (x, y interleaved). Vertices are only ever appended.
@@ -63,6 +89,20 @@ class Triangulation {
   std::vector<uint8_t> inside;
   // When set, every triangle (re)written by an insertion, flip or removal is appended here.
   std::vector<uint32_t>* touched = nullptr;
+  // When set, every write is noted there first (Journal); a copy of the triangulation keeps
+  // none. mark() and undoTo() below.
+  Journal* journal = nullptr;
+  Journal::Mark mark() const {
+    return {journal->slots.size(), journal->edges.size(), journal->points.size(),
+            journal->radii.size(), vertexCount(), slots_, rng_, freeSlots_};
+  }
+  // Puts back every slot, vertex edge and point noted since `m` and drops the vertices and
+  // slots added since (the caller drops its own per-vertex data past m.vertices).
+  void undoTo(const Journal::Mark& m);
+  // Notes point v's place before a caller moves it (the journal's writes come through here).
+  void notePoint(uint32_t v) {
+    if (journal) journal->points.push_back({v, {pts[2 * size_t(v)], pts[2 * size_t(v) + 1]}});
+  }
 
   uint32_t vertexCount() const { return uint32_t(pts.size() / 2); }
   // Slots in use or on the free list; the arrays may be longer (spare capacity, kNone).
@@ -150,8 +190,26 @@ class Triangulation {
   void freeTriangle(uint32_t t);
   void setCorners(uint32_t t, uint32_t a, uint32_t b, uint32_t c);
   void link(uint32_t e, uint32_t f) {
+    noteSlot(e / 3);
+    noteSlot(f / 3);
     opp[e] = f;
     opp[f] = e;
+  }
+  void noteSlot(uint32_t t) {
+    if (!journal) return;
+    Journal::Slot r;
+    r.t = t;
+    for (int k = 0; k < 3; ++k) {
+      const size_t e = 3 * size_t(t) + size_t(k);
+      r.tri[k] = tri[e], r.opp[k] = opp[e], r.fixed[k] = fixed[e];
+      r.wind[k] = trackWinding ? wind[e] : 0;
+      r.segment[k] = trackSegments ? segment[e] : kNone;
+    }
+    r.inside = inside.empty() ? 0 : inside[t];
+    journal->slots.push_back(r);
+  }
+  void noteEdge(uint32_t v) {
+    if (journal && v != kGhost) journal->edges.push_back({v, vertexEdge[v]});
   }
   // What a half-edge carries besides its endpoints, moved as a unit by splits and flips.
   struct EdgeAttr {
@@ -165,6 +223,7 @@ class Triangulation {
   }
   // Sets e's flags from a (twin too, unless noTwin).
   void setAttr(uint32_t e, const EdgeAttr& a, bool withTwin = true) {
+    noteSlot(e / 3);
     if (withTwin) link(e, a.twin);
     fixed[e] = a.fixed;
     if (trackWinding) wind[e] = a.wind;

@@ -199,3 +199,70 @@ TEST(Triangulation, RemoveVertexRefusesFixedAndHullVertices) {
   EXPECT_TRUE(T.removeVertex(v[4]));
   EXPECT_EQ(checkStore(T), "");
 }
+
+// The journal (Triangulation::journal) takes back every change since a mark: insertions,
+// removals, fixed edges and moved points, nested marks each to their own state, and the store
+// then goes on as a copy from before would (its random walk's state included).
+TEST(Triangulation, JournalTakesEveryChangeBack) {
+  Triangulation T = build(randomPoints(300, 11));
+  T.inside.assign(T.triangleSlots(), 0);
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) T.inside[t] = !T.isFree(t) && !T.isGhost(t);
+  auto same = [](const Triangulation& a, const Triangulation& b) -> std::string {
+    if (a.triangleSlots() != b.triangleSlots()) return "slot count";
+    if (a.liveTriangleCount() != b.liveTriangleCount()) return "free slots";
+    if (a.pts != b.pts) return "points";
+    if (a.vertexEdge != b.vertexEdge) return "vertex edges";
+    for (size_t e = 0; e < 3 * size_t(a.triangleSlots()); ++e)
+      if (a.tri[e] != b.tri[e] || a.opp[e] != b.opp[e] || a.fixed[e] != b.fixed[e])
+        return "half-edge " + std::to_string(e);
+    for (uint32_t t = 0; t < a.triangleSlots(); ++t)
+      if (a.inside[t] != b.inside[t]) return "inside " + std::to_string(t);
+    return "";
+  };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.9, 0.9);
+  auto change = [&](Triangulation& S) {
+    for (int i = 0; i < 20; ++i) {
+      const uint32_t v = S.addVertex(u(rng), u(rng));
+      S.insert(v, 0);
+    }
+    for (int i = 0; i < 20; ++i) S.removeVertex(uint32_t(rng() % 300));
+    for (int i = 0; i < 5; ++i) {
+      const uint32_t t = uint32_t(rng() % S.triangleSlots());
+      if (!S.isFree(t) && !S.isGhost(t) && !S.isFixed(3 * t)) S.fixEdge(3 * t, 1);
+    }
+    for (int i = 0; i < 10; ++i) {  // (a point moved: the caller notes it)
+      const uint32_t v = uint32_t(rng() % 300);
+      S.notePoint(v);
+      S.pts[2 * size_t(v)] += 1e-9;
+    }
+  };
+  Journal journal;
+  const Triangulation before = T;
+  T.journal = &journal;
+  const Journal::Mark outer = T.mark();
+  change(T);
+  const Triangulation between = [&] {
+    Triangulation copy = T;
+    copy.journal = nullptr;
+    return copy;
+  }();
+  const Journal::Mark inner = T.mark();
+  change(T);
+  ASSERT_NE(same(T, between), "") << "the changes changed nothing";
+  T.undoTo(inner);
+  EXPECT_EQ(same(T, between), "") << "back to the inner mark";
+  EXPECT_EQ(checkStore(T), "");
+  T.undoTo(outer);
+  EXPECT_EQ(same(T, before), "") << "back to the outer mark";
+  EXPECT_EQ(checkStore(T), "");
+  EXPECT_TRUE(journal.slots.empty() && journal.edges.empty() && journal.points.empty());
+  T.journal = nullptr;
+  Triangulation copy = before;
+  for (int i = 0; i < 50; ++i) {
+    const double x = u(rng), y = u(rng);
+    T.insert(T.addVertex(x, y), 0);
+    copy.insert(copy.addVertex(x, y), 0);
+  }
+  EXPECT_EQ(same(T, copy), "") << "the store went on otherwise than a copy";
+}

@@ -128,6 +128,7 @@ bool AngleDescent::improvesAt(uint32_t v, const double* p, bool bestValid) {
 // refinement's smallest; else v stays. (No Delaunay flips: flipIfBetter decides the edges.)
 bool AngleDescent::settleAt(uint32_t v, const double* p) {
   Triangulation& T = s_.T;
+  T.notePoint(v);
   double* at = &T.pts[2 * size_t(v)];
   const double old[2] = {at[0], at[1]};
   at[0] = p[0], at[1] = p[1];
@@ -310,6 +311,74 @@ double AngleDescent::violationNearChanges(const RefineState& s) {
   return sum;
 }
 
+// violationNearChanges of the state as it was at mark m, read through the journal: each slot,
+// vertex edge and point as its first note since m has it, else as it is now (what no write
+// noted is unchanged). Vertices made since m were not there.
+double AngleDescent::violationNearChangesAt(const Journal::Mark& m) {
+  const Triangulation& T = s_.T;
+  const Journal& j = journal_;
+  if (oldSlot_.size() < T.triangleSlots()) oldSlot_.resize(T.triangleSlots(), 0);
+  if (oldEdge_.size() < T.vertexCount()) oldEdge_.resize(T.vertexCount(), 0);
+  if (oldPoint_.size() < T.vertexCount()) oldPoint_.resize(T.vertexCount(), 0);
+  for (size_t i = m.slots; i < j.slots.size(); ++i)
+    if (!oldSlot_[j.slots[i].t]) oldSlot_[j.slots[i].t] = uint32_t(i + 1);
+  // (A vertex made and dropped since the mark may be noted: it is past the count.)
+  for (size_t i = m.edges; i < j.edges.size(); ++i)
+    if (j.edges[i].first < T.vertexCount() && !oldEdge_[j.edges[i].first])
+      oldEdge_[j.edges[i].first] = uint32_t(i + 1);
+  for (size_t i = m.points; i < j.points.size(); ++i)
+    if (j.points[i].v < T.vertexCount() && !oldPoint_[j.points[i].v])
+      oldPoint_[j.points[i].v] = uint32_t(i + 1);
+  auto record = [&](uint32_t t) -> const Journal::Slot* {
+    return oldSlot_[t] ? &j.slots[oldSlot_[t] - 1] : nullptr;
+  };
+  auto cornerOf = [&](uint32_t e) {
+    const Journal::Slot* r = record(e / 3);
+    return r ? r->tri[e % 3] : T.tri[e];
+  };
+  auto twinOf = [&](uint32_t e) {
+    const Journal::Slot* r = record(e / 3);
+    return r ? r->opp[e % 3] : T.opp[e];
+  };
+  auto pointOf = [&](uint32_t v, double* out) {
+    const double* p = oldPoint_[v] ? j.points[oldPoint_[v] - 1].xy : T.point(v);
+    out[0] = p[0], out[1] = p[1];
+  };
+  slots_.clear();
+  for (uint32_t v : changed_) {
+    if (v >= m.vertices) continue;
+    const uint32_t e0 = oldEdge_[v] ? j.edges[oldEdge_[v] - 1].second : T.vertexEdge[v];
+    if (e0 == kNone) continue;
+    uint32_t e = e0;
+    do {
+      slots_.push_back(e / 3);
+      e = twinOf(prev(e));
+    } while (e != e0);
+  }
+  std::sort(slots_.begin(), slots_.end());
+  slots_.erase(std::unique(slots_.begin(), slots_.end()), slots_.end());
+  double sum = 0;
+  for (uint32_t t : slots_) {
+    const Journal::Slot* r = record(t);
+    const bool inside = r ? r->inside != 0 : T.inside[t] != 0;
+    uint32_t c[3];
+    for (uint32_t k = 0; k < 3; ++k) c[k] = cornerOf(3 * t + k);
+    if (!inside || c[0] == kNone || c[0] == kGhost || c[1] == kGhost || c[2] == kGhost) continue;
+    double x[3][2];
+    for (int k = 0; k < 3; ++k) pointOf(c[k], x[k]);
+    const double* p[3] = {x[0], x[1], x[2]};
+    // (violationOf's, from the corners: the descent's targets have no exact feet.)
+    const double margin = triangleMargin(job_.target, p[0], p[1], p[2]);
+    if (margin < 0 || job_.target.worstCorner(p, 0).k >= 0) sum += std::max(-margin, 1e-9);
+  }
+  for (size_t i = m.slots; i < j.slots.size(); ++i) oldSlot_[j.slots[i].t] = 0;
+  for (size_t i = m.edges; i < j.edges.size(); ++i)
+    if (j.edges[i].first < T.vertexCount()) oldEdge_[j.edges[i].first] = 0;
+  for (size_t i = m.points; i < j.points.size(); ++i)
+    if (j.points[i].v < T.vertexCount()) oldPoint_[j.points[i].v] = 0;
+  return sum;
+}
+
 // Smoothing sweeps over the vertices of the triangles `touched` lists and their neighbours.
 void AngleDescent::smoothAround(const std::vector<uint32_t>& touched) {
   const Triangulation& T = s_.T;
@@ -476,10 +545,13 @@ uint32_t AngleDescent::worstNear() {
 bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
   std::vector<Move> moves;
   movesFor(t, moves);
+  const bool outermost = s_.T.journal == nullptr;
+  if (outermost) s_.T.journal = &journal_;
+  bool kept = false;
   for (const Move& m : moves) {
-    if (job_.budget.stop() || movesLeft_ == 0) return false;
+    if (job_.budget.stop() || movesLeft_ == 0) break;
     --movesLeft_;
-    saved_.push_back(s_);
+    const Journal::Mark mark = s_.mark();
     touched_.clear();
     changed_.clear();
     s_.T.touched = &touched_;
@@ -494,22 +566,25 @@ bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
       recording_ = true;
       smoothAround(touched_);
       recording_ = false;
-      const double after = current + violationNearChanges(s_) - violationNearChanges(saved_.back());
+      const double after = current + violationNearChanges(s_) - violationNearChangesAt(mark);
       if (after < now - 1e-12) {
         now = after;
-        saved_.pop_back();
-        return true;
+        kept = true;
+        break;
       }
       const uint32_t u = depth > 1 ? worstNear() : kNone;
       if (u != kNone && fix(u, depth - 1, now, after)) {
-        saved_.pop_back();
-        return true;
+        kept = true;
+        break;
       }
     }
-    s_ = std::move(saved_.back());
-    saved_.pop_back();
+    s_.undoTo(mark);
   }
-  return false;
+  if (outermost) {
+    s_.T.journal = nullptr;
+    journal_.slots.clear(), journal_.edges.clear(), journal_.points.clear(), journal_.radii.clear();
+  }
+  return kept;
 }
 
 // fix() for each triangle that misses the target (while it is still there and still misses

@@ -69,6 +69,7 @@ class AngleDescent {
   double violationOf(const RefineState& s, uint32_t t) const;
   double violation() const;
   double violationNearChanges(const RefineState& s);
+  double violationNearChangesAt(const Journal::Mark& m);
   void smoothAround(const std::vector<uint32_t>& touched);
   uint32_t longestEdge(uint32_t t) const;
   size_t flipPass();
@@ -88,7 +89,12 @@ class AngleDescent {
   uint32_t seg_[2] = {kNone, kNone};  // its neighbours along its segment (segment points)
   uint32_t segment_ = kNone;
   std::vector<double> best_, try_;  // margins (scratch)
-  std::vector<RefineState> saved_;  // fix()'s, one per depth
+  // fix()'s moves are tried in place and taken back through this (Triangulation::journal),
+  // not on copies of the state: a move costs what it touches.
+  Journal journal_;
+  // violationNearChangesAt's: per slot and vertex, 1 + the index of its first note since the
+  // mark (0: none), reset after each use.
+  std::vector<uint32_t> oldSlot_, oldEdge_, oldPoint_;
   std::vector<uint32_t> touched_, near_;
   // While a move is judged (fix()): every vertex whose star it changed, and the triangle slots
   // around them (scratch).

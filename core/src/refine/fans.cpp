@@ -75,7 +75,7 @@ double CornerFans::radiusFor(uint32_t v, bool onlyWhereBad) {
 void CornerFans::build(uint32_t v, double r) {
   Triangulation& T = s_.T;
   readStar(v);
-  s_.fanRadius[v] = r;
+  s_.setFanRadius(v, r);
   const double pv[2] = {s_.P(v)[0], s_.P(v)[1]};
   const size_t n = spokes_.size();
   // Split each fixed edge at v that bounds a domain sector at distance r.

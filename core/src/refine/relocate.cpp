@@ -51,6 +51,7 @@ bool Relocation::segmentStar(uint32_t a, uint32_t spokes[2]) {
 // (exact) and meets the target there.
 bool Relocation::place(uint32_t a, double x, double y) {
   const Target& target = job_.target;
+  s_.T.notePoint(a);
   double* where = &s_.T.pts[2 * size_t(a)];
   where[0] = x, where[1] = y;
   // The right angle at a is what most samples fail: tested first (the answer is the same).

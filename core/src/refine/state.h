@@ -41,6 +41,20 @@ struct RefineState {
     footOf.push_back(kNone);
     return T.addVertex(p[0], p[1]);
   }
+  // A change tried in place (the descent's moves), while T.journal is set: mark() before it,
+  // undoTo() takes it back (Triangulation::undoTo), per-vertex data and fan radii too.
+  Journal::Mark mark() const { return T.mark(); }
+  void undoTo(const Journal::Mark& m) {
+    std::vector<std::pair<uint32_t, double>>& radii = T.journal->radii;
+    for (size_t i = radii.size(); i-- > m.radii;) fanRadius[radii[i].first] = radii[i].second;
+    radii.resize(m.radii);
+    T.undoTo(m);
+    role.resize(m.vertices), fanCenter.resize(m.vertices), footOf.resize(m.vertices);
+  }
+  void setFanRadius(uint32_t v, double r) {
+    if (T.journal) T.journal->radii.push_back({v, fanRadius[v]});
+    fanRadius[v] = r;
+  }
   // Takes back the vertex just added, which no triangle uses.
   void dropLastVertex() {
     T.pts.resize(T.pts.size() - 2);
