@@ -19,7 +19,8 @@
 # Inputs: the committed bench inputs (bench/inputs/data: the text outlines with --fill nonzero),
 # tests/data/A.poly, and from the reference data ($ACUTEMESH_DATA, else ../shared/data, the
 # tests' rule) superior.poly and the CG:SHOP instances; without the data those are skipped and
-# the report says so. Each run's stdout, stderr and exit status are kept in bench/work/max-angle/runs/.
+# the report says so; Greece (bench/work/countries/gr.json) when `npm run bench:countries` has
+# made it. Each run's stdout, stderr and exit status are kept in bench/work/max-angle/runs/.
 #
 # Options: --quick: A.poly, plate and one CG:SHOP instance per category, 5 s limits (checks the
 # script, not the mesher). Environment: MAXANGLE_TIME_LIMIT (default 20) seconds per run on the
@@ -80,6 +81,16 @@ for c in "${CASES[@]}"; do
   fi
   printf '%s|%s|%s|%s\n' "$id" "$label" "$file" "$args" >>"$WORK/cases.txt"
 done
+# A whole country (every island and lake), when bench:countries has made it.
+country=bench/work/countries/gr.json
+if ((QUICK)); then
+  :
+elif [[ -f "$country" ]]; then
+  printf '%s|%s|%s|%s\n' greece "Greece (GMT's DCW outline, 14,455 vertices)" "$country" "" >>"$WORK/cases.txt"
+else
+  note "skipped: Greece ($country is made by npm run bench:countries)"
+  echo "Greece ($country, made by npm run bench:countries)" >>"$WORK/skipped.txt"
+fi
 
 # The CG:SHOP instances: per category (the name before _SIZE_HASH), PER_CATEGORY of them spread
 # evenly over the category's sizes.

@@ -80,6 +80,14 @@ double area(const Mesh& m) {
   return sum;
 }
 
+// The archipelago's fill, in CDT mode (what the tests measure the domain with).
+Options evenOddCdt() {
+  Options o;
+  o.mode = Mode::Cdt;
+  o.fill = FillRule::EvenOdd;
+  return o;
+}
+
 bool sameMesh(const Mesh& a, const Mesh& b) {
   return a.points.size() == b.points.size() && a.triangles == b.triangles &&
          a.segments == b.segments && a.vertexKind == b.vertexKind &&
@@ -90,9 +98,7 @@ bool sameMesh(const Mesh& a, const Mesh& b) {
 
 TEST(Parts, ArchipelagoCertifiedCoveredAndTheSameOnAnyThreads) {
   const Pslg in = archipelago();
-  Options cdt;
-  cdt.mode = Mode::Cdt;
-  cdt.fill = FillRule::EvenOdd;
+  const Options cdt = evenOddCdt();
   const Result plain = mesh(in, cdt);
   ASSERT_EQ(plain.status, Status::Ok) << plain.message;
   ASSERT_GE(plain.mesh.triangleCount(), 4096u) << "too small to go by parts";
@@ -142,9 +148,7 @@ TEST(Parts, CancelledRunStillCoversEveryPart) {
   Options plain = o;
   plain.mode = Mode::Cdt;  // (a cancelled mesh meets no angle target: check it as a CDT's)
   EXPECT_EQ(fixtures::validationErrors(in, plain, cut.mesh), "");
-  Options cdt;
-  cdt.mode = Mode::Cdt;
-  cdt.fill = FillRule::EvenOdd;
+  const Options cdt = evenOddCdt();
   const double domain = area(mesh(in, cdt).mesh);
   EXPECT_NEAR(area(cut.mesh), domain, 1e-12 * domain) << "a part is missing";
 }
@@ -155,9 +159,7 @@ TEST(Parts, CancelledRunStillCoversEveryPart) {
 // no part weighs more than a thread's share (each part then runs one chain).
 TEST(Parts, OptimizeByPartsOnAnyThreads) {
   const Pslg in = archipelago();
-  Options cdt;
-  cdt.mode = Mode::Cdt;
-  cdt.fill = FillRule::EvenOdd;
+  const Options cdt = evenOddCdt();
   const double domain = area(mesh(in, cdt).mesh);
   for (Mode mode : {Mode::NonObtuse, Mode::Acute}) {
     Options o = cdt;
@@ -199,9 +201,7 @@ TEST(Parts, OptimizeByPartsOnAnyThreads) {
 // and certified, none its CDT, and says the bound was not reached.
 TEST(Parts, BelowNinetyCutShortLeavesEveryPartAcute) {
   const Pslg in = archipelago();
-  Options cdt;
-  cdt.mode = Mode::Cdt;
-  cdt.fill = FillRule::EvenOdd;
+  const Options cdt = evenOddCdt();
   const double domain = area(mesh(in, cdt).mesh);
   Options o = cdt;
   o.mode = Mode::Acute;
