@@ -26,6 +26,9 @@ struct RunLimits {
   uint32_t steinerLimit = 0;
   SteinerGate* gate = nullptr;
   bool reportProgress = true;
+  // The polish stops here (Budget::elapsed seconds; 0: it runs its rounds out): a sized
+  // quality mesh's polish counts within --optimize's seconds (refineWithStrategies).
+  double polishUntil = 0;
   bool reached(uint32_t vertexCount) {
     if (!gate) return vertexCount >= steinerLimit;
     gate->checked.store(vertexCount);
@@ -55,6 +58,10 @@ struct Job {
   }
   // Options::progress is called on the reporting thread only.
   bool reportsProgress() const { return limits->reportProgress && bool(options.progress); }
+  // Whether the polish and the removals must stop: the budget is spent, or the polish's time.
+  bool improvementOver() const {
+    return budget.stop() || (limits && limits->polishUntil > 0 && budget.elapsed() > limits->polishUntil);
+  }
   // Lets the progress relay report, from long loops that do not poll the budget.
   void pollProgress() const {
     if (reportsProgress() && budget.progress()) budget.progress()->poll();

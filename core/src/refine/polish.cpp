@@ -24,7 +24,7 @@ void Polish::run() {
   if (!target.countsPoints() || repair_.missesBeyondLeft()) return;
   const size_t inputVertices = job_.input.vertexCount();
   int idleRounds = 0;  // the last rounds in a row that took out no point
-  for (int r = 0; r < kPolishRounds && !job_.budget.stop(); ++r) {
+  for (int r = 0; r < kPolishRounds && !job_.improvementOver(); ++r) {
     // (Progress: each round half of what is left, as the rounds that end it are not known.)
     const ProgressRelay::Part part(job_.reportsProgress() ? job_.budget.progress() : nullptr,
                                    1 - std::ldexp(1.0, -r), 1 - std::ldexp(1.0, -r - 1));
@@ -59,6 +59,9 @@ void Polish::search(double seconds, uint64_t tries, uint64_t seed) {
   };
   ProgressRelay* relay = job_.progressRelay();
   const size_t inputVertices = job_.input.vertexCount();
+  // (A try on a large mesh takes seconds: its rounds stop when the seconds end, too.)
+  const double polishUntil = job_.limits->polishUntil;
+  if (seconds > 0) job_.limits->polishUntil = job_.budget.elapsed() + seconds;
   RefineState best = s_;
   size_t fewest = s_.liveSteiner(inputVertices);
   uint64_t x = (seed + 1) * 0x9E3779B97F4A7C15ull;  // xorshift64: the same tries everywhere
@@ -143,6 +146,7 @@ void Polish::search(double seconds, uint64_t tries, uint64_t seed) {
     }
   }
   s_ = std::move(best);
+  job_.limits->polishUntil = polishUntil;
 }
 
 // Smoothing makes the room removals and merges need: a sweep before each removal and merge
@@ -235,6 +239,7 @@ void Polish::roundInHalves(int r) {
   RefineState copy = s_;
   RunLimits quiet;  // (its limit is never asked: a round makes no repairs)
   quiet.reportProgress = false;
+  quiet.polishUntil = job_.limits->polishUntil;
   Job otherJob = job_;
   if (helperThread) otherJob.limits = &quiet;  // (one after the other, both halves report)
   Refiner other(copy, otherJob);

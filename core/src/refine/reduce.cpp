@@ -244,7 +244,7 @@ bool Reduce::shouldStop(double done) {
   if ((++attempts_ & 63) != 0) return false;
   if (job_.reportsProgress() && job_.budget.progress())
     job_.budget.progress()->note("improve", done, s_.T.vertexCount());
-  return job_.budget.stop();
+  return job_.improvementOver();
 }
 
 // Oldest first: the early, coarse points are the likeliest to have become redundant.
@@ -273,7 +273,7 @@ void Reduce::markDue(const std::vector<uint8_t>* due) {
 void Reduce::mergeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
   markDue(due);
   for (int pass = 0; pass < passes; ++pass)
-    if (mergePass() == 0 || job_.budget.stop()) break;
+    if (mergePass() == 0 || job_.improvementOver()) break;
 }
 
 // Tries each due Steiner vertex (that the scope owns) with its partners, the same pair once.

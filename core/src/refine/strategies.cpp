@@ -386,10 +386,14 @@ RefineOutcome refineWithStrategies(const RefineState& start, const Pslg& input,
   {
     const ProgressRelay::Part part(budget.progress(), 0, search ? kPolishBeforeSearch : 1);
     const double before = budget.elapsed();
-    if (settled) best.refiner().polish();
     // A sized quality mesh is polished only for the search (Target::countsPoints): its polish
-    // counts within the seconds asked, and may take them all.
-    if (search && !target.boundsLargest() && target.sized() && options.optimize > 0) {
+    // counts within the seconds asked, and may take them all (it stops there).
+    const bool polishCounts =
+        search && !target.boundsLargest() && target.sized() && options.optimize > 0;
+    if (polishCounts) best.limits().polishUntil = before + options.optimize;
+    if (settled) best.refiner().polish();
+    if (polishCounts) {
+      best.limits().polishUntil = 0;
       searchFor.optimize = options.optimize - (budget.elapsed() - before);
       if (searchFor.optimize <= 0) searchFor.optimize = 0, searchFor.optimizeTries = 0;
     }
