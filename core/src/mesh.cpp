@@ -403,7 +403,8 @@ void certify(const Options& options, double asked, double largestArea,
     result.message = missing ? std::to_string(missing) + " triangles still miss the target"
                              : "some triangles still miss the target";
   }
-  if (!met && stats.certified && result.status == Status::TargetNotMet)
+  // (Auto cut short has no bound to miss, but says what it certified too.)
+  if ((!met || asked == kAutoMaxAngle) && stats.certified && result.status == Status::TargetNotMet)
     result.message += "; every angle is below " + detail::degreesText(stats.angleBound) + " (certified)";
   if (!met && result.status == Status::TargetNotMet)
     result.message += missedPlaces(result.mesh, stats.missedTriangles, corners);

@@ -324,7 +324,7 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     }
     return index[v];
   };
-  bool missed = false, cancelled = false, outOfTime = budget.outOfTime();
+  bool missed = false, cancelled = false, partCut = false;
   // The whole's twins from the parts' (each part's run leaves its store's in
   // Mesh::adjacency.halfedges; no edge joins two parts). A part still in T's triangles has
   // none: the output labels then find them.
@@ -335,7 +335,7 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     const Mesh& m = part.result.mesh;
     missed |= !part.result.stats.targetMet || m.triangles.empty();
     cancelled |= part.result.status == Status::Cancelled;
-    outOfTime |= part.outOfTime;
+    partCut |= part.outOfTime;
     twinsKnown &= !m.triangles.empty() && m.adjacency.halfedges.size() == m.triangles.size();
     if (twinsKnown) {
       const int32_t offset = int32_t(mesh.triangles.size());
@@ -373,7 +373,11 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     result.status = Status::Cancelled;
     result.message = missed ? "cancelled before every part met the target"
                             : "cancelled while removing Steiner points; the mesh meets the target";
-  } else if (missed && outOfTime) {
+  } else if (target.maxAngle == kAutoMaxAngle && target.mode == Mode::Acute && partCut) {
+    // (Auto has no bound to miss; a part's descent cut short is said, as a whole run's is.)
+    result.status = Status::TargetNotMet;
+    result.message = "the time limit came before the lowest bound was found";
+  } else if (missed && (partCut || budget.outOfTime())) {
     result.status = Status::TargetNotMet;
     result.message = "time limit reached before every triangle met the target";
   }

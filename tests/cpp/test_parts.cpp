@@ -238,5 +238,13 @@ TEST(Parts, BelowNinetyCutShortLeavesEveryPartAcute) {
     ASSERT_EQ(r.status, Status::TargetNotMet) << r.message;
     EXPECT_EQ(r.message.find("time limit reached"), 0u) << r.message;
     check(r, "time limit");
+    // Auto has no bound to miss, but a part cut short is said, as a whole run's would be.
+    limited.maxAngle = kAutoMaxAngle;
+    const Result a = mesh(in, limited);
+    ASSERT_EQ(a.status, Status::TargetNotMet) << a.message;
+    EXPECT_EQ(a.message.find("the time limit came before the lowest bound was found; every angle is below "), 0u)
+        << a.message;
+    EXPECT_EQ(a.stats.nonAcute, 0u) << "auto: a part was left unrefined";
+    EXPECT_NEAR(area(a.mesh), domain, 1e-12 * domain) << "auto: a part is missing";
   }
 }
