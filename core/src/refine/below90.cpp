@@ -266,11 +266,12 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
   };
   // The starts two at a time, the better of each pair kept (the direct refinement meets 85
   // degrees, but often with more points than the acute mesh's descent), until a pair meets the
-  // bound. Where there are threads the pair runs at once (the second's progress unreported):
-  // the same mesh either way.
+  // bound; on a large mesh the direct start alone first (kDirectAloneFrom). Where there are
+  // threads the pair runs at once (the second's progress unreported): the same mesh either way.
   constexpr size_t count = std::size(kStarts), batch = 2;
-  for (size_t i = 0; i < count && !best.met && !budget.stop(); i += batch) {
-    const size_t n = std::min(batch, count - i);
+  const bool directAlone = acute.T.vertexCount() >= kDirectAloneFrom;
+  for (size_t i = 0, n = 0; i < count && !best.met && !budget.stop(); i += n) {
+    n = std::min(i == 0 && directAlone ? 1 : batch, count - i);
     std::vector<Candidate> results(n);
     std::vector<char> ran(n, 0);
     bool together = false;
