@@ -163,13 +163,23 @@ void runPart(Part& part, const Options& options) {
 #endif
 }
 
+// Whether a part's run ended with an acute mesh (the first certificate of a bound below 90).
+bool isAcute(const Result& r) {
+  return !r.mesh.triangles.empty() && r.stats.certified && r.stats.nonAcute == 0;
+}
+
+// Which round of runs (runParts): the only one; below 90 degrees the acute meshes (the parts'
+// inputs kept for the next), then the descents.
+enum class Round { Only, Acute, Descents };
+
 // Runs every part's problem toward `target` on `threads` threads (the calling one alone for
 // 1), the largest first so that the last to end are small; reports the whole's fraction from
-// the calling thread, which alone may call Options::progress. With `shareTime`, each part's
-// run may use its share (by weight) of the time left to the parts not yet started, and no part
-// starts once the budget is spent.
+// the calling thread, which alone may call Options::progress. In the descents' round each
+// part's run may use its share (by weight) of the time left to the parts not yet started, no
+// part starts once the budget is spent, and a part's acute mesh goes once its own run has one.
 void runRound(std::vector<Part>& parts, const Options& target, const Budget& budget,
-              unsigned threads, PartProgress& progress, bool shareTime) {
+              unsigned threads, PartProgress& progress, Round round) {
+  const bool shareTime = round == Round::Descents;
   std::vector<size_t> order(parts.size());
   for (size_t p = 0; p < parts.size(); ++p) order[p] = p;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
@@ -212,6 +222,8 @@ void runRound(std::vector<Part>& parts, const Options& target, const Budget& bud
       runPart(parts[p], options);
       parts[p].outOfTime = options.timeLimit > 0 && parts[p].result.status != Status::Ok &&
                            parts[p].result.stats.seconds >= options.timeLimit;
+      if (round != Round::Acute) parts[p].pslg = Pslg{};  // (no longer needed)
+      if (shareTime && isAcute(parts[p].result)) parts[p].acute = Result{};
       progress.finish(p);
       if (reporting) report();
     }
@@ -241,11 +253,6 @@ void runRound(std::vector<Part>& parts, const Options& target, const Budget& bud
   work(true);
 }
 
-// Whether a part's run ended with an acute mesh (the first certificate of a bound below 90).
-bool isAcute(const Result& r) {
-  return !r.mesh.triangles.empty() && r.stats.certified && r.stats.nonAcute == 0;
-}
-
 // Runs every part's problem (runRound). A bound below 90 degrees (or auto) goes in two rounds:
 // every part's acute mesh first (quick), then each part's descent toward the bound in its
 // share of the time left; a part whose descent a time limit or a cancel cut short before it
@@ -255,17 +262,17 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
               unsigned threads) {
   PartProgress progress(parts);
   if (target.mode != Mode::Acute || target.maxAngle >= 90) {
-    runRound(parts, target, budget, threads, progress, false);
+    runRound(parts, target, budget, threads, progress, Round::Only);
     return;
   }
   Options acute = target;
   acute.maxAngle = 90;
   acute.optimize = 0, acute.optimizeTries = 0;
   progress.span(0, kPartsAcuteShare);
-  runRound(parts, acute, budget, threads, progress, false);
+  runRound(parts, acute, budget, threads, progress, Round::Acute);
   for (Part& part : parts) part.acute = std::move(part.result), part.result = Result{};
   progress.span(kPartsAcuteShare, 1);
-  runRound(parts, target, budget, threads, progress, true);
+  runRound(parts, target, budget, threads, progress, Round::Descents);
   for (Part& part : parts) {
     if (isAcute(part.result) || part.acute.mesh.triangles.empty()) continue;
     part.result = std::move(part.acute);
