@@ -27,7 +27,8 @@ struct RunLimits {
   SteinerGate* gate = nullptr;
   bool reportProgress = true;
   // The polish stops here (Budget::elapsed seconds; 0: it runs its rounds out): a sized
-  // quality mesh's polish counts within --optimize's seconds (refineWithStrategies).
+  // quality mesh's polish counts within --optimize's seconds (refineWithStrategies), and the
+  // search's tries end with its seconds (Polish::search).
   double polishUntil = 0;
   bool reached(uint32_t vertexCount) {
     if (!gate) return vertexCount >= steinerLimit;
