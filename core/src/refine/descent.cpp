@@ -279,8 +279,15 @@ double AngleDescent::violationOf(const RefineState& s, uint32_t t) const {
   const Triangulation& T = s.T;
   if (!T.inDomain(t)) return 0;
   const uint32_t* v = &T.tri[3 * t];
-  const double m = triangleMargin(job_.target, T.point(v[0]), T.point(v[1]), T.point(v[2]));
-  return m < 0 || job_.target.misses(s, t) ? std::max(-m, 1e-9) : 0;
+  const double* p[3] = {T.point(v[0]), T.point(v[1]), T.point(v[2])};
+  return violationAt(p);
+}
+
+// violationOf's for the domain triangle with corners p (the descent's targets are acute:
+// no exact feet, so the corners say it all).
+double AngleDescent::violationAt(const double* const p[3]) const {
+  const double m = triangleMargin(job_.target, p[0], p[1], p[2]);
+  return m < 0 || job_.target.worstCorner(p, 0).k >= 0 ? std::max(-m, 1e-9) : 0;
 }
 
 // The total violation: violationOf summed over the domain, 0 when every triangle meets it.
@@ -367,9 +374,7 @@ double AngleDescent::violationNearChangesAt(const Journal::Mark& m) {
     double x[3][2];
     for (int k = 0; k < 3; ++k) pointOf(c[k], x[k]);
     const double* p[3] = {x[0], x[1], x[2]};
-    // (violationOf's, from the corners: the descent's targets have no exact feet.)
-    const double margin = triangleMargin(job_.target, p[0], p[1], p[2]);
-    if (margin < 0 || job_.target.worstCorner(p, 0).k >= 0) sum += std::max(-margin, 1e-9);
+    sum += violationAt(p);
   }
   for (size_t i = m.slots; i < j.slots.size(); ++i) oldSlot_[j.slots[i].t] = 0;
   for (size_t i = m.edges; i < j.edges.size(); ++i)

@@ -67,6 +67,7 @@ class AngleDescent {
   size_t repair(int depth);
   bool optimise(uint32_t v);
   double violationOf(const RefineState& s, uint32_t t) const;
+  double violationAt(const double* const p[3]) const;
   double violation() const;
   double violationNearChanges(const RefineState& s);
   double violationNearChangesAt(const Journal::Mark& m);
