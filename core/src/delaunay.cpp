@@ -27,7 +27,8 @@ uint32_t hilbertIndex(uint32_t x, uint32_t y) {
 }
 
 // Vertex indices sorted along a Hilbert curve (two 16-bit radix passes), so that each
-// insertion's walk starts next to where it ends.
+// insertion's walk starts next to where it ends; ties in input order.
+constexpr uint32_t kRadixFrom = 16384;
 std::vector<uint32_t> hilbertOrder(const std::vector<double>& pts, uint32_t count) {
   double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
   for (uint32_t i = 0; i < count; ++i) {
@@ -41,6 +42,13 @@ std::vector<uint32_t> hilbertOrder(const std::vector<double>& pts, uint32_t coun
     auto gx = uint32_t((pts[2 * i] - minX) * scale), gy = uint32_t((pts[2 * i + 1] - minY) * scale);
     key[i] = hilbertIndex(std::min(gx, 65535u), std::min(gy, 65535u));
     order[i] = i;
+  }
+  // (A small input, such as one of the thousand islands of a country meshed part by part: a
+  // comparison sort, as the radix passes' 2^16 buckets would cost more than the points.)
+  if (count < kRadixFrom) {
+    std::sort(order.begin(), order.end(),
+              [&](uint32_t a, uint32_t b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
+    return order;
   }
   std::vector<uint32_t> bucket(65537);
   for (int shift = 0; shift < 32; shift += 16) {

@@ -32,6 +32,10 @@ constexpr size_t kPartsFrom = 4096;
 // progress bar they stand for (a descent takes ten to a hundred times as long).
 constexpr double kPartsAcuteShare = 0.1;
 
+// A domain (a part) of this many vertices or more runs its first strategy alone, the others
+// only should it miss: from here on it won on every country's part (strategies.cpp).
+constexpr uint32_t kFirstStrategyAloneFrom = 3000;
+
 // --- Budgets --------------------------------------------------------------------------------
 // The default Steiner budget: this many per input vertex, at least kSteinerAtLeast.
 constexpr double kSteinerPerInputVertex = 50, kSteinerAtLeast = 20000;

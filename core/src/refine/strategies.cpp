@@ -60,6 +60,10 @@ std::vector<Strategy> strategiesFor(const Options& options, double demand, uint3
   // Sizes that ask for many more triangles than the input has vertices set the count
   // themselves: the strategies would differ by little, so only the first runs.
   if (demand > kSizedAlone * vertices) strategies.resize(1);
+  // A large domain (a country's mainland): the first strategy wins there (docs/TUNING.md), and
+  // each other one costs the time and memory of a whole run: they run only should it miss.
+  if (vertices >= kFirstStrategyAloneFrom)
+    for (size_t i = 1; i < strategies.size(); ++i) strategies[i].fallback = true;
   if (options.mode == Mode::Acute) {
     // Wide fans in every strategy, and should none of them meet the target (wide fans can
     // crowd a tiny corner), all of them again with the usual fans as fallbacks. Not below 90
