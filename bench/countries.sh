@@ -13,18 +13,20 @@
 #     come from nesting). Lon/lat degrees are meshed as plane coordinates;
 #  4. per country and mode (cdt, quality at the default 20 degrees, acute, nonobtuse):
 #     `build/acutemesh --mode MODE --stats --no-output --threads 2 --time-limit L INPUT`,
-#     N runs (3 for the small countries, 1 for Canada), each under GNU time (peak RSS) with its
-#     wall time, stdout, stderr and exit status kept in bench/work/countries/runs/; acute also
+#     N runs (3 for the small countries, 1 for Canada and the United States), each under GNU
+#     time (peak RSS) with its wall time, stdout, stderr and exit status kept in
+#     bench/work/countries/runs/; acute also
 #     once through the npm package (dist/, WebAssembly in Node; bench/inputs/countries_wasm.mjs)
-#     when dist/ is built (`bash scripts/build.sh --package`), not for Canada unless
+#     when dist/ is built (`bash scripts/build.sh --package`), not for those two unless
 #     COUNTRIES_WASM_ALL=1;
 #  5. bench/inputs/countries_report.mjs writes bench/results/countries-YYYY-MM-DD.md (-2, -3, ...
 #     for a later run the same day), printed here.
 #
-# BENCH_QUICK=1 skips Canada; COUNTRIES="gr no" runs just those; COUNTRIES_OPTIMIZE=S (whole
-# seconds) adds one acute and one non-obtuse run with `--optimize S` per country (issue 27: the
-# search by parts). A run cut by its --time-limit shows as "cut"; one killed (at twice the limit
-# + 60 s) or failing shows its exit status and first error line.
+# BENCH_QUICK=1 skips Canada and the United States; COUNTRIES="gr no" runs just those;
+# COUNTRIES_OPTIMIZE=S (whole seconds) adds one acute and one non-obtuse run with
+# `--optimize S` per country (issue 27: the search by parts). A run cut by its --time-limit
+# shows as "cut"; one killed (at twice the limit + 60 s) or failing shows its exit status and
+# first error line.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # shellcheck source=bench/common.sh
@@ -66,6 +68,7 @@ CASES=(
   "no|Norway (fjords)|NO|3|120"
   "id|Indonesia (archipelago)|ID|3|300"
   "ca|Canada|CA|1|600"
+  "us|United States|US|1|600"
 )
 if [[ "${BENCH_QUICK:-0}" == 1 ]]; then CASES=("${CASES[@]:0:3}"); fi
 : >"$WORK/cases.txt"
@@ -118,7 +121,7 @@ while IFS='|' read -r id label code file runs limit; do
         --stats --no-output --threads 2 --time-limit "$((limit + COUNTRIES_OPTIMIZE))" --optimize "$COUNTRIES_OPTIMIZE" "$file"
     done
   fi
-  if ((wasm)) && [[ "$id" != ca || "${COUNTRIES_WASM_ALL:-0}" == 1 ]]; then
+  if ((wasm)) && [[ "$runs" -gt 1 || "${COUNTRIES_WASM_ALL:-0}" == 1 ]]; then
     cut -d' ' -f1 /proc/loadavg >"$RUNDIR/$id.wasm-acute.load"
     note "$id ($label): acute in Node (WASM), load $(cat "$RUNDIR/$id.wasm-acute.load")"
     timed "$RUNDIR/$id.wasm-acute.1" $((2 * limit + 60)) node bench/inputs/countries_wasm.mjs "$file" acute "$limit"

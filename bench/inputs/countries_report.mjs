@@ -110,7 +110,7 @@ for (const c of cases) {
     let wasmCell = '';
     if (mode === 'acute') {
       const w = measure(c.id, 'wasm-acute', 1);
-      if (!w) wasmCell = c.id === 'ca' ? 'not run (COUNTRIES_WASM_ALL=1)' : 'n/a (dist/ not built)';
+      if (!w) wasmCell = c.runs === 1 ? 'not run (COUNTRIES_WASM_ALL=1)' : 'n/a (dist/ not built)';
       else {
         const ws = w.stats;
         const secs = ws ? ws.jsSeconds : null;
@@ -148,12 +148,15 @@ if (!big.length) {
     `(${big.map((f) => `${name(f)} ${f.bpt === null ? '—' : f.bpt.toFixed(0)}`).join('; ')}; ` +
     `smaller inputs: ${refined.filter((f) => !big.includes(f)).map((f) => `${name(f)} ${f.bpt === null ? '—' : f.bpt.toFixed(0)}`).join(', ')}).`);
 }
-const coast = figures.find((f) => f.mode === 'acute' && f.s && distinct(f.s) >= 1e6);
-if (coast) {
-  targets.push(`- A 10^6-vertex coastline acute, certified, in under ${TARGET.coastlineSeconds} s natively: ${say(okRun(coast) && coast.wall < TARGET.coastlineSeconds)} ` +
-    `(${coast.c.label}, ${fmtInt(distinct(coast.s))} distinct vertices: ${fmtS(coast.wall)} s wall, ${coast.s.certified ? 'certified' : 'not certified'}).`);
-  const w = figures.find((f) => f.mode === 'wasm-acute' && f.c === coast.c);
-  targets.push(`- The same in under a minute in Node (WASM): ${w && w.s ? `${say(w.r.rc === 0 && w.s.certified && w.wall < TARGET.wasmSeconds)} (${fmtS(w.wall)} s)` : 'not measured'}.`);
+// Every 10^6-vertex coastline's acute run: the target holds if one of them meets it.
+const coasts = figures.filter((f) => f.mode === 'acute' && f.s && distinct(f.s) >= 1e6);
+if (coasts.length) {
+  const fast = (f) => okRun(f) && f.wall < TARGET.coastlineSeconds;
+  targets.push(`- A 10^6-vertex coastline acute, certified, in under ${TARGET.coastlineSeconds} s natively: ${say(coasts.some(fast))} (` +
+    coasts.map((f) => `${f.c.label}, ${fmtInt(distinct(f.s))} distinct vertices: ${fmtS(f.wall)} s wall, ${f.s.certified ? 'certified' : 'not certified'}`).join('; ') + ').');
+  const wasm = coasts.map((f) => ({ f, w: figures.find((x) => x.mode === 'wasm-acute' && x.c === f.c) })).filter((x) => x.w && x.w.s);
+  targets.push(`- The same in under a minute in Node (WASM): ${wasm.length ? `${say(wasm.some(({ w }) => w.r.rc === 0 && w.s.certified && w.wall < TARGET.wasmSeconds))} (` +
+    wasm.map(({ f, w }) => `${f.c.code} ${fmtS(w.wall)} s`).join('; ') + ')' : 'not measured'}.`);
 } else {
   targets.push(`- A 10^6-vertex coastline acute, certified, in under ${TARGET.coastlineSeconds} s natively (under a minute in WASM): not measured (no input of 10^6 vertices in this run).`);
 }
