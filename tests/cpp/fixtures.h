@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,31 @@ inline acutemesh::Pslg archipelago(int count, int corners, double (*radius)(int,
     in.regions.push_back(g);
   }
   return in;
+}
+
+// A generated coastline (the kind of outline maps bring): a polygon of `corners` corners
+// around (cx, cy), each edge split `levels` times at a point pushed off its middle along its
+// normal by up to 0.12 of its length (corners * 2^levels vertices), from `rng`.
+inline std::vector<double> coastline(std::mt19937_64& rng, double cx, double cy, double radius,
+                                     int corners, int levels) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> xy;
+  for (int i = 0; i < corners; ++i) {
+    const double a = 2 * M_PI * i / corners;
+    xy.insert(xy.end(), {cx + radius * std::cos(a), cy + radius * std::sin(a)});
+  }
+  for (int level = 0; level < levels; ++level) {
+    std::vector<double> finer;
+    const size_t n = xy.size() / 2;
+    for (size_t i = 0; i < n; ++i) {
+      const double *p = &xy[2 * i], *q = &xy[2 * ((i + 1) % n)];
+      const double off = 0.12 * u(rng);
+      finer.insert(finer.end(), {p[0], p[1], (p[0] + q[0]) / 2 - off * (q[1] - p[1]),
+                                 (p[1] + q[1]) / 2 + off * (q[0] - p[0])});
+    }
+    xy = std::move(finer);
+  }
+  return xy;
 }
 
 // The largest area of the mesh's triangles (as doubles compute it).

@@ -14,6 +14,7 @@
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/predicates.h"
 #include "fixtures.h"
+#include "refine/params.h"
 
 using namespace acutemesh;
 
@@ -25,38 +26,19 @@ void addRing(Pslg& in, const std::vector<double>& xy) {
   for (uint32_t k = 0; k < n; ++k) in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
 }
 
-// An archipelago, even-odd fill: nine coastlines of 512 vertices (a polygon's edges split
-// again and again at points pushed off their middles, a fixed seed), the first with a lake
-// holding an islet; two squares touching at a corner; a square with a segment inside it
-// (given both ways, so that it winds nothing); and a real island from Norway's outline whose
-// vertex 0 lies between its neighbours on one line within rounding, which leaves a sliver
-// outside its boundary that a split has to get past (it failed when meshed alone).
+// An archipelago, even-odd fill: nine coastlines of 512 vertices (a fixed seed), the first
+// with a lake holding an islet; two squares touching at a corner; a square with a segment
+// inside it (given both ways, so that it winds nothing); and a real island from Norway's
+// outline whose vertex 0 lies between its neighbours on one line within rounding, which
+// leaves a sliver outside its boundary that a split has to get past (it failed when meshed
+// alone).
 Pslg archipelago() {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
-  auto ring = [&](double cx, double cy, double radius, int corners, int levels) {
-    std::vector<double> xy;
-    for (int i = 0; i < corners; ++i) {
-      const double a = 2 * M_PI * i / corners;
-      xy.insert(xy.end(), {cx + radius * std::cos(a), cy + radius * std::sin(a)});
-    }
-    for (int level = 0; level < levels; ++level) {
-      std::vector<double> finer;
-      const size_t n = xy.size() / 2;
-      for (size_t i = 0; i < n; ++i) {
-        const double *p = &xy[2 * i], *q = &xy[2 * ((i + 1) % n)];
-        const double off = 0.12 * u(rng);
-        finer.insert(finer.end(), {p[0], p[1], (p[0] + q[0]) / 2 - off * (q[1] - p[1]),
-                                   (p[1] + q[1]) / 2 + off * (q[0] - p[0])});
-      }
-      xy = std::move(finer);
-    }
-    return xy;
-  };
   Pslg in;
-  for (int i = 0; i < 9; ++i) addRing(in, ring(19 + 0.3 * (i % 3), 69.5 + 0.3 * (i / 3), 0.1, 8, 6));
-  addRing(in, ring(19, 69.5, 0.05, 8, 3));    // a lake in the first island
-  addRing(in, ring(19, 69.5, 0.015, 8, 2));   // an islet in the lake
+  for (int i = 0; i < 9; ++i)
+    addRing(in, fixtures::coastline(rng, 19 + 0.3 * (i % 3), 69.5 + 0.3 * (i / 3), 0.1, 8, 6));
+  addRing(in, fixtures::coastline(rng, 19, 69.5, 0.05, 8, 3));   // a lake in the first island
+  addRing(in, fixtures::coastline(rng, 19, 69.5, 0.015, 8, 2));  // an islet in the lake
   addRing(in, {20.3, 69.4, 20.4, 69.4, 20.4, 69.5, 20.3, 69.5});  // two squares, one corner shared
   addRing(in, {20.4, 69.5, 20.5, 69.5, 20.5, 69.6, 20.4, 69.6});
   const uint32_t s = uint32_t(in.points.size() / 2);
@@ -120,6 +102,33 @@ TEST(Parts, ArchipelagoCertifiedCoveredAndTheSameOnAnyThreads) {
     o.threads = 2;
     const Result two = mesh(in, o);
     EXPECT_TRUE(sameMesh(one.mesh, two.mesh)) << nameOf(mode) << ": threads change the mesh";
+  }
+}
+
+// A coastline of 4,096 vertices (a country's large island): a domain that large runs its first
+// strategy alone, the others only should it miss (strategies.cpp); acute and non-obtuse are
+// certified and cover it, on one thread as on two, with the same mesh.
+TEST(Parts, LargeCoastlineCertifiedOnAnyThreads) {
+  std::mt19937_64 rng(11);
+  Pslg in;
+  addRing(in, fixtures::coastline(rng, 0, 0, 1, 8, 9));
+  ASSERT_GE(in.vertexCount(), size_t(detail::kFirstStrategyAloneFrom));
+  const Options cdt = evenOddCdt();
+  const Result plain = mesh(in, cdt);
+  ASSERT_EQ(plain.status, Status::Ok) << plain.message;
+  const double domain = area(plain.mesh);
+  for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
+    Options o = cdt;
+    o.mode = mode;
+    o.threads = 1;
+    const Result one = mesh(in, o);
+    ASSERT_EQ(one.status, Status::Ok) << nameOf(mode) << ": " << one.message;
+    EXPECT_TRUE(one.stats.certified) << nameOf(mode);
+    EXPECT_GT(one.stats.steiner, 0u) << nameOf(mode);
+    EXPECT_EQ(fixtures::validationErrors(in, o, one.mesh), "") << nameOf(mode);
+    EXPECT_NEAR(area(one.mesh), domain, 1e-12 * domain) << nameOf(mode);
+    o.threads = 2;
+    EXPECT_TRUE(sameMesh(one.mesh, mesh(in, o).mesh)) << nameOf(mode) << ": threads change the mesh";
   }
 }
 

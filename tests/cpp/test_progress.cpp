@@ -56,25 +56,8 @@ Pslg gear() {
 // middles (a fixed seed), 8,192 vertices, with two lakes; even-odd fill.
 Pslg coastline() {
   std::mt19937_64 rng(25);
-  std::uniform_real_distribution<double> u(-1, 1);
   auto ring = [&](double cx, double cy, double radius, int corners, int levels) {
-    std::vector<double> xy;
-    for (int i = 0; i < corners; ++i) {
-      const double a = 2 * M_PI * i / corners;
-      xy.insert(xy.end(), {cx + radius * std::cos(a), cy + radius * std::sin(a)});
-    }
-    for (int level = 0; level < levels; ++level) {
-      std::vector<double> finer;
-      const size_t n = xy.size() / 2;
-      for (size_t i = 0; i < n; ++i) {
-        const double *p = &xy[2 * i], *q = &xy[2 * ((i + 1) % n)];
-        const double off = 0.12 * u(rng);  // (of the edge's length, along its normal)
-        finer.insert(finer.end(), {p[0], p[1], (p[0] + q[0]) / 2 - off * (q[1] - p[1]),
-                                   (p[1] + q[1]) / 2 + off * (q[0] - p[0])});
-      }
-      xy = std::move(finer);
-    }
-    return xy;
+    return fixtures::coastline(rng, cx, cy, radius, corners, levels);
   };
   Pslg in;
   for (const std::vector<double>& xy : {ring(0, 0, 100, 16, 9), ring(-30, 10, 12, 8, 5),
