@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -76,15 +77,12 @@ bool sameMesh(const Mesh& a, const Mesh& b) {
          std::memcmp(a.points.data(), b.points.data(), a.points.size() * sizeof(double)) == 0;
 }
 
-}  // namespace
-
-TEST(Parts, ArchipelagoCertifiedCoveredAndTheSameOnAnyThreads) {
-  const Pslg in = archipelago();
+// Acute and non-obtuse meshes of `in` on one thread: ok, certified, valid and covering the
+// domain (`more` checks what else the test asks); on two threads: the same mesh.
+void expectCertifiedCoveredOnAnyThreads(const Pslg& in,
+                                        const std::function<void(Mode, const Result&)>& more) {
   const Options cdt = evenOddCdt();
-  const Result plain = mesh(in, cdt);
-  ASSERT_EQ(plain.status, Status::Ok) << plain.message;
-  ASSERT_GE(plain.mesh.triangleCount(), 4096u) << "too small to go by parts";
-  const double domain = area(plain.mesh);
+  const double domain = area(mesh(in, cdt).mesh);
   for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
     Options o = cdt;
     o.mode = mode;
@@ -94,42 +92,38 @@ TEST(Parts, ArchipelagoCertifiedCoveredAndTheSameOnAnyThreads) {
     EXPECT_TRUE(one.stats.certified) << nameOf(mode);
     EXPECT_EQ(fixtures::validationErrors(in, o, one.mesh), "") << nameOf(mode);
     EXPECT_NEAR(area(one.mesh), domain, 1e-12 * domain) << nameOf(mode) << ": a part is missing";
+    more(mode, one);
+    o.threads = 2;
+    EXPECT_TRUE(sameMesh(one.mesh, mesh(in, o).mesh)) << nameOf(mode) << ": threads change the mesh";
+  }
+}
+
+}  // namespace
+
+TEST(Parts, ArchipelagoCertifiedCoveredAndTheSameOnAnyThreads) {
+  const Pslg in = archipelago();
+  const Result plain = mesh(in, evenOddCdt());
+  ASSERT_EQ(plain.status, Status::Ok) << plain.message;
+  ASSERT_GE(plain.mesh.triangleCount(), 4096u) << "too small to go by parts";
+  expectCertifiedCoveredOnAnyThreads(in, [&](Mode mode, const Result& one) {
     const size_t sharedCopy = in.vertexCount() - 9 - 4 - 4;  // (the second square's corner)
     for (size_t v = 0; v < in.vertexCount(); ++v) {
       if (v == sharedCopy) continue;
       EXPECT_EQ(one.mesh.vertexKind[v], kInputVertex) << nameOf(mode) << " vertex " << v;
     }
-    o.threads = 2;
-    const Result two = mesh(in, o);
-    EXPECT_TRUE(sameMesh(one.mesh, two.mesh)) << nameOf(mode) << ": threads change the mesh";
-  }
+  });
 }
 
 // A coastline of 4,096 vertices (a country's large island): a domain that large runs its first
-// strategy alone, the others only should it miss (strategies.cpp); acute and non-obtuse are
-// certified and cover it, on one thread as on two, with the same mesh.
+// strategy alone, the others only should it miss (strategies.cpp).
 TEST(Parts, LargeCoastlineCertifiedOnAnyThreads) {
   std::mt19937_64 rng(11);
   Pslg in;
   addRing(in, fixtures::coastline(rng, 0, 0, 1, 8, 9));
   ASSERT_GE(in.vertexCount(), size_t(detail::kFirstStrategyAloneFrom));
-  const Options cdt = evenOddCdt();
-  const Result plain = mesh(in, cdt);
-  ASSERT_EQ(plain.status, Status::Ok) << plain.message;
-  const double domain = area(plain.mesh);
-  for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
-    Options o = cdt;
-    o.mode = mode;
-    o.threads = 1;
-    const Result one = mesh(in, o);
-    ASSERT_EQ(one.status, Status::Ok) << nameOf(mode) << ": " << one.message;
-    EXPECT_TRUE(one.stats.certified) << nameOf(mode);
+  expectCertifiedCoveredOnAnyThreads(in, [](Mode mode, const Result& one) {
     EXPECT_GT(one.stats.steiner, 0u) << nameOf(mode);
-    EXPECT_EQ(fixtures::validationErrors(in, o, one.mesh), "") << nameOf(mode);
-    EXPECT_NEAR(area(one.mesh), domain, 1e-12 * domain) << nameOf(mode);
-    o.threads = 2;
-    EXPECT_TRUE(sameMesh(one.mesh, mesh(in, o).mesh)) << nameOf(mode) << ": threads change the mesh";
-  }
+  });
 }
 
 TEST(Parts, CancelledRunStillCoversEveryPart) {
