@@ -26,9 +26,11 @@ uint32_t hilbertIndex(uint32_t x, uint32_t y) {
   return d;
 }
 
+// From this many points on, the Hilbert order is sorted by radix passes (below: comparisons).
+constexpr uint32_t kRadixFrom = 16384;
+
 // Vertex indices sorted along a Hilbert curve (two 16-bit radix passes), so that each
 // insertion's walk starts next to where it ends; ties in input order.
-constexpr uint32_t kRadixFrom = 16384;
 std::vector<uint32_t> hilbertOrder(const std::vector<double>& pts, uint32_t count) {
   double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
   for (uint32_t i = 0; i < count; ++i) {
