@@ -321,7 +321,8 @@ TEST(Optimize, QualityWithSizesPolishEndsWithTheSeconds) {
   EXPECT_GT(r.stats.sizeRatio, 0);
   EXPECT_LE(r.stats.sizeRatio, 1);
   EXPECT_LT(r.stats.steiner, base.stats.steiner);
-  // (The refinement's own time besides, and a round's step past the end: 2.5 s is far below
-  // the 9 s the polish took to its end.)
-  EXPECT_LT(r.stats.seconds, base.stats.seconds + 0.5 + 2.5);
+  // (The refinement's own time besides, twice the base run's for a machine busy with other
+  // work (in WebAssembly beside another test run it took 4.0 s against a base of 0.6 s), and a
+  // round's step past the end: far below the 9 s the polish took to its end.)
+  EXPECT_LT(r.stats.seconds, 2 * base.stats.seconds + 0.5 + 2.5);
 }
