@@ -188,9 +188,13 @@ TEST(Parts, OptimizeByPartsOnAnyThreads) {
       EXPECT_EQ(w.find("optimize"), std::string::npos) << nameOf(mode) << ": " << w;
     EXPECT_LT(r.stats.steiner, base.stats.steiner) << nameOf(mode);
     if (mode == Mode::NonObtuse) {
-      // (The plain run timed again after: on a loaded machine one run may take twice another.)
+      // (The plain run timed again after: on a loaded machine one run may take twice another.
+      // Natively only: in WebAssembly a plain run takes 6 s, and beside other work its time
+      // varied by more than the search's second: 6.5-7.0 s against 6.1 s with the search.)
       const double plain = std::min(base.stats.seconds, mesh(in, o).stats.seconds);
+#ifndef __EMSCRIPTEN__
       EXPECT_GT(seconds, plain + 0.5) << "the parts' searches took no time";
+#endif
       EXPECT_LT(seconds, 1 + 2 * base.stats.seconds + 1);
     } else {
       search.threads = 1;
