@@ -15,10 +15,9 @@
 #     `build/acutemesh --mode MODE --stats --no-output --threads 2 --time-limit L INPUT`,
 #     N runs (3 for the small countries, 1 for Canada and the United States), each under GNU
 #     time (peak RSS) with its wall time, stdout, stderr and exit status kept in
-#     bench/work/countries/runs/; acute also
-#     once through the npm package (dist/, WebAssembly in Node; bench/inputs/countries_wasm.mjs)
-#     when dist/ is built (`bash scripts/build.sh --package`), not for those two unless
-#     COUNTRIES_WASM_ALL=1;
+#     bench/work/countries/runs/; acute also once through the npm package (dist/, WebAssembly
+#     in Node; bench/inputs/countries_wasm.mjs) when dist/ is built (`bash scripts/build.sh
+#     --package`), not for the one-run inputs (those two) unless COUNTRIES_WASM_ALL=1;
 #  5. bench/inputs/countries_report.mjs writes bench/results/countries-YYYY-MM-DD.md (-2, -3, ...
 #     for a later run the same day), printed here.
 #

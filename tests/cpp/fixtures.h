@@ -88,6 +88,14 @@ inline acutemesh::Pslg archipelago(int count, int corners, double (*radius)(int,
   return in;
 }
 
+// Adds the closed ring xy (x, y per point) to `in`: its points and a segment along each side.
+inline void addRing(acutemesh::Pslg& in, const std::vector<double>& xy) {
+  const uint32_t first = uint32_t(in.vertexCount()), n = uint32_t(xy.size() / 2);
+  in.points.insert(in.points.end(), xy.begin(), xy.end());
+  for (uint32_t k = 0; k < n; ++k)
+    in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
+}
+
 // A generated coastline (the kind of outline maps bring): a polygon of `corners` corners
 // around (cx, cy), each edge split `levels` times at a point pushed off its middle along its
 // normal by up to 0.12 of its length (corners * 2^levels vertices), from `rng`.

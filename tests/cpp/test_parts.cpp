@@ -18,14 +18,10 @@
 #include "refine/params.h"
 
 using namespace acutemesh;
+using fixtures::addRing;
+using fixtures::coastline;
 
 namespace {
-
-void addRing(Pslg& in, const std::vector<double>& xy) {
-  const uint32_t first = uint32_t(in.points.size() / 2), n = uint32_t(xy.size() / 2);
-  in.points.insert(in.points.end(), xy.begin(), xy.end());
-  for (uint32_t k = 0; k < n; ++k) in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
-}
 
 // An archipelago, even-odd fill: nine coastlines of 512 vertices (a fixed seed), the first
 // with a lake holding an islet; two squares touching at a corner; a square with a segment
@@ -37,9 +33,9 @@ Pslg archipelago() {
   std::mt19937_64 rng(7);
   Pslg in;
   for (int i = 0; i < 9; ++i)
-    addRing(in, fixtures::coastline(rng, 19 + 0.3 * (i % 3), 69.5 + 0.3 * (i / 3), 0.1, 8, 6));
-  addRing(in, fixtures::coastline(rng, 19, 69.5, 0.05, 8, 3));   // a lake in the first island
-  addRing(in, fixtures::coastline(rng, 19, 69.5, 0.015, 8, 2));  // an islet in the lake
+    addRing(in, coastline(rng, 19 + 0.3 * (i % 3), 69.5 + 0.3 * (i / 3), 0.1, 8, 6));
+  addRing(in, coastline(rng, 19, 69.5, 0.05, 8, 3));   // a lake in the first island
+  addRing(in, coastline(rng, 19, 69.5, 0.015, 8, 2));  // an islet in the lake
   addRing(in, {20.3, 69.4, 20.4, 69.4, 20.4, 69.5, 20.3, 69.5});  // two squares, one corner shared
   addRing(in, {20.4, 69.5, 20.5, 69.5, 20.5, 69.6, 20.4, 69.6});
   const uint32_t s = uint32_t(in.points.size() / 2);
@@ -94,7 +90,8 @@ void expectCertifiedCoveredOnAnyThreads(const Pslg& in,
     EXPECT_NEAR(area(one.mesh), domain, 1e-12 * domain) << nameOf(mode) << ": a part is missing";
     more(mode, one);
     o.threads = 2;
-    EXPECT_TRUE(sameMesh(one.mesh, mesh(in, o).mesh)) << nameOf(mode) << ": threads change the mesh";
+    EXPECT_TRUE(sameMesh(one.mesh, mesh(in, o).mesh))
+        << nameOf(mode) << ": threads change the mesh";
   }
 }
 
@@ -119,7 +116,7 @@ TEST(Parts, ArchipelagoCertifiedCoveredAndTheSameOnAnyThreads) {
 TEST(Parts, LargeCoastlineCertifiedOnAnyThreads) {
   std::mt19937_64 rng(11);
   Pslg in;
-  addRing(in, fixtures::coastline(rng, 0, 0, 1, 8, 9));
+  addRing(in, coastline(rng, 0, 0, 1, 8, 9));
   ASSERT_GE(in.vertexCount(), size_t(detail::kFirstStrategyAloneFrom));
   expectCertifiedCoveredOnAnyThreads(in, [](Mode mode, const Result& one) {
     EXPECT_GT(one.stats.steiner, 0u) << nameOf(mode);

@@ -56,17 +56,10 @@ Pslg gear() {
 // middles (a fixed seed), 8,192 vertices, with two lakes; even-odd fill.
 Pslg coastline() {
   std::mt19937_64 rng(25);
-  auto ring = [&](double cx, double cy, double radius, int corners, int levels) {
-    return fixtures::coastline(rng, cx, cy, radius, corners, levels);
-  };
   Pslg in;
-  for (const std::vector<double>& xy : {ring(0, 0, 100, 16, 9), ring(-30, 10, 12, 8, 5),
-                                        ring(35, -20, 8, 8, 5)}) {
-    const uint32_t first = uint32_t(in.points.size() / 2), n = uint32_t(xy.size() / 2);
-    in.points.insert(in.points.end(), xy.begin(), xy.end());
-    for (uint32_t k = 0; k < n; ++k)
-      in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
-  }
+  fixtures::addRing(in, fixtures::coastline(rng, 0, 0, 100, 16, 9));
+  fixtures::addRing(in, fixtures::coastline(rng, -30, 10, 12, 8, 5));
+  fixtures::addRing(in, fixtures::coastline(rng, 35, -20, 8, 8, 5));
   return in;
 }
 
