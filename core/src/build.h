@@ -56,11 +56,20 @@ StepResult buildDelaunay(Triangulation& T, const std::vector<double>& points,
                          std::vector<uint32_t>& canonical, std::vector<uint32_t>& inputOf,
                          const Budget& budget);
 
+// Segment ends within rounding reach of another segment, strictly inside it: mostly the tips
+// of spikes and slivers thinner than the reach (digitising artefacts), which no refinement
+// resolves. insertSegments lists them in `found` (vertex in T, the input segment it lies on)
+// and, with `snap` (refinement modes), runs the segment through each, folding the sliver.
+struct NearEnds {
+  bool snap = false;
+  std::vector<std::pair<uint32_t, uint32_t>> found;
+};
+
 // Inserts every input segment as a chain of fixed edges, splitting it at vertices that lie
 // on it and at crossings with other segments (adding the crossing points as vertices).
 StepResult insertSegments(Triangulation& T, const Pslg& input,
                           const std::vector<uint32_t>& canonical, Stats& stats,
-                          const Budget& budget);
+                          const Budget& budget, NearEnds& nearEnds);
 
 // Marks which triangles belong to the domain (per triangle slot: 1 inside, 0 outside or
 // ghost or free), following options.fill / convexHull and (Triangle fill) the input's hole

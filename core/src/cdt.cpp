@@ -2,7 +2,8 @@
 //
 // Each input segment is inserted as a chain of fixed edges. Walking from one end toward the
 // other, every decision is an exact orientation test: a vertex exactly on the segment splits
-// it there (so does an input point that ends no segment within rounding reach of it), an
+// it there (so does an input point that ends no segment within rounding reach of it, and in
+// refinement a segment end that near: NearEnds), an
 // already fixed edge crossed by it yields a new vertex at the crossing (both segments then
 // pass through that vertex), and otherwise the triangles it crosses give way to
 // the constrained Delaunay triangulations of its two sides (Triangulation::
@@ -30,9 +31,9 @@ struct Piece {
 class SegmentInserter {
  public:
   SegmentInserter(Triangulation& T, const Pslg& input, const std::vector<uint32_t>& canonical,
-                  const Budget& budget)
+                  const Budget& budget, NearEnds& nearEnds)
       : T_(T), input_(input), canonical_(canonical), budget_(budget),
-        inputCount_(uint32_t(input.vertexCount())) {}
+        inputCount_(uint32_t(input.vertexCount())), nearEnds_(nearEnds) {}
 
   StepResult insert(uint32_t seg, uint64_t crossingBudget);
   uint64_t crossings() const { return crossings_; }
@@ -67,12 +68,16 @@ class SegmentInserter {
     const double *a = segmentEnd(seg, 0), *b = segmentEnd(seg, 1);
     return orient2d(a, b, P(y)) == 0 && dot2d(P(y), a, b) < 0;
   }
-  // Whether input vertex y, the end of no segment, lies within rounding reach of the piece's
-  // segment, strictly between the piece's ends: a turned or otherwise rounded copy of a point
-  // on the segment (a CG:SHOP point set's points on its hull). It splits the segment as one
-  // exactly on it would; passed by, it would stand a rounding off a segment that refinement
-  // could then never split beside it. (A segment's end that near stays apart: snapped, a
-  // needle's tip would fold the needle away.)
+  // Whether input vertex y lies within rounding reach of the piece's segment, strictly
+  // between the piece's ends, and splits the segment as one exactly on it would:
+  // - a point that ends no segment: a turned or otherwise rounded copy of a point on the
+  //   segment (a CG:SHOP point set's points on its hull); passed by, it would stand a rounding
+  //   off a segment that refinement could then never split beside it;
+  // - a segment end, with NearEnds::snap (refinement): mostly the tip of a spike or sliver
+  //   thinner than the reach validate() grants (a digitising artefact: Canada's outline has
+  //   one 4.5e-11 wide, at 2e-6 degrees), whose wedge no refinement resolves. Snapped, the
+  //   sliver's sides coincide and it is gone, a change of the domain within the reach. A CDT
+  //   keeps the input as given.
   bool nearlyOnPiece(const Piece& piece, uint32_t y) {
     if (y >= inputCount_) return false;
     if (segmentEnds_.empty()) {
@@ -80,8 +85,13 @@ class SegmentInserter {
       for (uint32_t end : input_.segments) segmentEnds_[canonical_[end]] = 1;
     }
     const double *a = segmentEnd(piece.seg, 0), *b = segmentEnd(piece.seg, 1);
-    return !segmentEnds_[y] && nearSegment(a, b, P(y)) && dot2d(P(y), a, b) < 0 &&
-           dot2d(P(y), P(piece.from), P(piece.to)) < 0;
+    if (!(nearSegment(a, b, P(y)) && dot2d(P(y), a, b) < 0 &&
+          dot2d(P(y), P(piece.from), P(piece.to)) < 0))
+      return false;
+    if (!segmentEnds_[y]) return true;
+    if (nearEnds_.found.empty() || nearEnds_.found.back() != std::make_pair(y, piece.seg))
+      nearEnds_.found.push_back({y, piece.seg});  // (a walk may pass it more than once)
+    return nearEnds_.snap;
   }
   std::vector<uint8_t> segmentEnds_;  // per input vertex (made when first asked)
   // The piece is to run through vertex y: its two halves, the first on top.
@@ -103,6 +113,7 @@ class SegmentInserter {
   const std::vector<uint32_t>& canonical_;
   const Budget& budget_;
   uint32_t inputCount_;  // store vertices below this are input vertices, exact
+  NearEnds& nearEnds_;
   std::vector<uint32_t> representative_;
   std::vector<Piece> todo_;
   // joinAcross's queue: crossed edges by their ends, with the half-edge last seen for them.
@@ -360,8 +371,9 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
 
 StepResult insertSegments(Triangulation& T, const Pslg& input,
                           const std::vector<uint32_t>& canonical, Stats& stats,
-                          const Budget& budget) {
-  SegmentInserter inserter(T, input, canonical, budget);
+                          const Budget& budget, NearEnds& nearEnds) {
+  nearEnds.found.clear();
+  SegmentInserter inserter(T, input, canonical, budget, nearEnds);
   size_t n = input.segmentCount();
   // Rounded crossing points can create a few more crossings; a budget far above any real
   // input's crossing count turns a pathological cascade into an error instead of a hang.

@@ -582,10 +582,13 @@ std::string emptyDomainMessage(const Triangulation& T, const Pslg& input, const 
 
 // The Delaunay triangulation of the input's vertices (inputOf: T's vertex k is input vertex
 // inputOf[k]), its segments inserted unless the mode is Delaunay, and the domain's triangles
-// marked in `inside`.
+// marked in `inside`. With nearEnds.snap, segment ends within rounding reach of another
+// segment are taken onto it, unless that leaves no domain: a needle that thin may be all
+// there is (then nearEnds.snap is cleared and the input is taken as given).
 StepResult triangulateDomain(const Pslg& input, const Options& options, const Budget& budget,
                              PhaseClock& clock, Triangulation& T, std::vector<uint32_t>& inputOf,
-                             std::vector<uint8_t>& inside, Stats& stats) {
+                             std::vector<uint8_t>& inside, Stats& stats, detail::NearEnds& nearEnds) {
+  const size_t warningsBefore = stats.warnings.size(), phasesBefore = stats.phases.size();
   const bool constrained = options.mode != Mode::Delaunay;
   const uint32_t n = uint32_t(input.vertexCount());
   T.trackSegments = T.trackWinding = constrained;
@@ -600,7 +603,7 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
                              " duplicate vertices merged into earlier equal ones");
   clock.end("delaunay", constrained ? "segments" : "domain");
   if (constrained) {
-    step = detail::insertSegments(T, input, canonical, stats, budget);
+    step = detail::insertSegments(T, input, canonical, stats, budget, nearEnds);
     if (!step.ok()) return step;
     clock.end("segments", "domain");
   }
@@ -612,10 +615,42 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   const bool refining = options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
                         options.mode == Mode::Acute;
   clock.end("domain", refining ? "refine" : "output");
-  if (std::find(inside.begin(), inside.end(), uint8_t(1)) == inside.end())
+  if (std::find(inside.begin(), inside.end(), uint8_t(1)) == inside.end()) {
+    if (nearEnds.snap && !nearEnds.found.empty()) {
+      stats.warnings.resize(warningsBefore);
+      stats.phases.resize(phasesBefore);
+      stats.duplicates = 0;
+      nearEnds.snap = false;
+      T = Triangulation{};
+      return triangulateDomain(input, options, budget, clock, T, inputOf, inside, stats, nearEnds);
+    }
     return {Status::BadInput, emptyDomainMessage(T, input, domainOptions, keepHull)};
+  }
   T.dropWinding();
   return {};
+}
+
+// What folding the slivers of segment ends near segments (detail::NearEnds) says: how many,
+// the first of them and how far off its segment it was.
+std::string snappedEndsWarning(const Triangulation& T, const Pslg& input,
+                               const detail::NearEnds& nearEnds, int exponent) {
+  std::vector<uint32_t> ends;
+  for (const auto& found : nearEnds.found) ends.push_back(found.first);
+  std::sort(ends.begin(), ends.end());
+  const size_t count = size_t(std::unique(ends.begin(), ends.end()) - ends.begin());
+  const auto [v, seg] = nearEnds.found.front();
+  const double* p = T.point(v);
+  const double* a = &input.points[2 * size_t(input.segments[2 * size_t(seg)])];
+  const double* b = &input.points[2 * size_t(input.segments[2 * size_t(seg) + 1])];
+  const double off = std::fabs(orient2d(a, b, p)) / std::hypot(b[0] - a[0], b[1] - a[1]);
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "%zu segment end%s within rounding reach of another segment taken onto it (the "
+                "first at (%.9g, %.9g), %.2g off it): the slivers there are too thin to refine; "
+                "the mesh follows the input within that reach",
+                count, count == 1 ? "" : "s", std::ldexp(p[0], exponent),
+                std::ldexp(p[1], exponent), std::ldexp(off, exponent));
+  return text;
 }
 
 }  // namespace
@@ -652,8 +687,17 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
   Triangulation T;
   std::vector<uint32_t> inputOf;
   std::vector<uint8_t> inside;
-  StepResult step = triangulateDomain(input, options, budget, clock, T, inputOf, inside, stats);
+  // Refinement cannot resolve the slivers a segment end within rounding reach of another
+  // segment makes: they are folded (NearEnds). A part's own run takes its part as given: a
+  // sliver may lie between two parts, which must agree on it.
+  detail::NearEnds nearEnds;
+  nearEnds.snap = byParts && (options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
+                              options.mode == Mode::Acute);
+  StepResult step =
+      triangulateDomain(input, options, budget, clock, T, inputOf, inside, stats, nearEnds);
   if (!step.ok()) return fail(step.status, step.message);
+  if (nearEnds.snap && !nearEnds.found.empty())
+    stats.warnings.push_back(snappedEndsWarning(T, input, nearEnds, exponent));
 
   bool refining = options.mode == Mode::Quality || options.mode == Mode::NonObtuse ||
                   options.mode == Mode::Acute;

@@ -22,16 +22,18 @@ struct Built {
   std::vector<uint32_t> canonical;
   StepResult result;
   Stats stats;
+  NearEnds nearEnds;
 };
 
-Built buildCdt(const Pslg& in) {
+Built buildCdt(const Pslg& in, bool snapNearEnds = false) {
   Built b;
   b.T.trackSegments = b.T.trackWinding = true;
   Options options;
   Budget budget(options);
   std::vector<uint32_t> inputOf;
   b.result = buildDelaunay(b.T, in.points, b.canonical, inputOf, budget);
-  if (b.result.ok()) b.result = insertSegments(b.T, in, b.canonical, b.stats, budget);
+  b.nearEnds.snap = snapNearEnds;
+  if (b.result.ok()) b.result = insertSegments(b.T, in, b.canonical, b.stats, budget, b.nearEnds);
   return b;
 }
 
@@ -263,5 +265,33 @@ TEST(Cdt, RandomSegmentsOnAGrid) {
     Built b = buildCdt(in);
     expectValidCdt(in, b);
     if (HasFailure()) return;
+  }
+}
+
+// A segment end 4.5e-11 off a segment (a digitising spike of Canada's outline, as in
+// test_refine's DigitisingSpike tests): listed either way; with snap, the segment runs through
+// it (and the spike's next segment, which crossed the first a rounding from that end, no
+// longer does).
+TEST(Cdt, SegmentEndNearASegmentSnappedOnlyWhenAsked) {
+  Pslg in;
+  in.points = {304.044414507, 52.7809173497, 304.047111935, 52.7796528742, 304.045763221,
+               52.7802851119, 304.047111935, 52.7802851119, 304.04846065, 52.779, 304.044, 52.779};
+  in.segments = {0, 1, 1, 2, 2, 3, 3, 1, 1, 4, 4, 5, 5, 0};
+  for (bool snap : {false, true}) {
+    SCOPED_TRACE(snap ? "snap" : "as given");
+    const Built b = buildCdt(in, snap);
+    if (!snap) {
+      expectValidCdt(in, b);
+    } else {  // (segment 0's chain runs a rounding off its line, through the tip)
+      ASSERT_TRUE(b.result.ok()) << b.result.message;
+      EXPECT_EQ(brokenLinks(b.T) + invertedTriangles(b.T) + nonDelaunayEdges(b.T), 0u);
+    }
+    const uint32_t a = b.canonical[0], tip = b.canonical[2], end = b.canonical[1];
+    ASSERT_EQ(b.nearEnds.found.size(), 1u);
+    EXPECT_EQ(b.nearEnds.found[0].first, tip);
+    EXPECT_EQ(b.nearEnds.found[0].second, 0u);
+    const uint32_t toTip = b.T.findEdge(a, tip), onward = b.T.findEdge(tip, end);
+    EXPECT_EQ(toTip != kNone && b.T.fixed[toTip] && onward != kNone && b.T.fixed[onward], snap);
+    EXPECT_EQ(b.T.vertexCount() > in.vertexCount(), !snap);  // the crossing point
   }
 }

@@ -2,6 +2,7 @@
 // angle claims are re-checked here exactly, corner by corner, independently of Stats.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -114,6 +115,81 @@ TEST(Refine, EveryModeOnTurnedVerticesOnSegments) {
         EXPECT_EQ(r.stats.segments, 6u) << what;  // (both sides split at their vertex)
       }
     }
+  }
+}
+
+// A digitising spike from Canada's outline (GMT's DCW): the ring runs from (0) to (1) and back
+// along that segment to (2), 4.5e-11 off it (2e-6 degrees at (1)), then around a loop through
+// (1) again; (2) is a segment end within rounding reach of segment (0)-(1). Refinement cannot
+// resolve the sliver between the two (every refining mode missed its target on it): it takes
+// (2) onto the segment (NearEnds) and meets the target, valid against the input as given. A
+// CDT keeps the sliver. `offset` moves (2) off the segment: beyond the reach nothing is
+// snapped.
+Pslg digitisingSpike(double offset) {
+  Pslg in;
+  fixtures::addRing(in, {304.044414507, 52.7809173497, 304.047111935, 52.7796528742,
+                         304.045763221, 52.7802851119, 304.047111935, 52.7802851119,
+                         304.047111935, 52.7796528742, 304.04846065, 52.7796528742,
+                         304.04846065, 52.779, 304.044, 52.779});
+  in.points[5] -= offset;
+  return in;
+}
+
+TEST(Refine, DigitisingSpikeSnappedOnASecondTry) {
+  auto snapped = [](const Result& r) {
+    for (const std::string& w : r.stats.warnings)
+      if (w.find("taken onto it") != std::string::npos) return w;
+    return std::string();
+  };
+  for (double offset : {0.0, 1e-8, 1e-7}) {
+    const Pslg in = digitisingSpike(offset);
+    for (Mode mode : {Mode::Cdt, Mode::Acute, Mode::NonObtuse, Mode::Quality}) {
+      Options o;
+      o.mode = mode;
+      o.fill = FillRule::EvenOdd;
+      const Result r = mesh(in, o);
+      const std::string what = "offset " + std::to_string(offset * 1e9) + "e-9 mode " + nameOf(mode);
+      ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+      expectValid(in, o, r, what);
+      EXPECT_TRUE(r.stats.targetMet) << what;
+      if (mode == Mode::Acute || mode == Mode::NonObtuse) {
+        EXPECT_TRUE(r.stats.certified) << what;
+      }
+      // Refinement snaps, and only within the reach.
+      const bool expected = mode != Mode::Cdt && offset == 0;
+      EXPECT_EQ(!snapped(r).empty(), expected) << what << ": " << snapped(r);
+      if (expected) {
+        EXPECT_NE(snapped(r).find("1 segment end within"), std::string::npos) << snapped(r);
+        EXPECT_NE(snapped(r).find("(304.045763, 52.7802851), 4.5e-11 off it"), std::string::npos)
+            << snapped(r);
+      }
+    }
+  }
+}
+
+// In a domain that goes by parts the whole's triangulation folds the sliver, which lies between
+// two parts (the loop through (1) and the rest of the ring): both agree on it.
+TEST(Refine, DigitisingSpikeSnappedInItsPart) {
+  Pslg in = digitisingSpike(0);
+  std::mt19937_64 rng(7);
+  fixtures::addRing(in, fixtures::coastline(rng, 304.2, 52.9, 0.1, 8, 9));  // 4,096 vertices
+  for (Mode mode : {Mode::Acute, Mode::NonObtuse}) {
+    Options o;
+    o.mode = mode;
+    o.fill = FillRule::EvenOdd;
+    const Result r = mesh(in, o);
+    const std::string what = std::string("mode ") + nameOf(mode);
+    ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+    expectValid(in, o, r, what);
+    EXPECT_TRUE(r.stats.certified) << what;
+    EXPECT_EQ(std::count_if(r.stats.warnings.begin(), r.stats.warnings.end(),
+                            [](const std::string& w) {
+                              return w.find("1 segment end within rounding reach of another "
+                                            "segment taken onto it (the first at (304.045763, "
+                                            "52.7802851)") == 0;
+                            }),
+              1)
+        << what;
   }
 }
 
