@@ -63,6 +63,9 @@ StepResult buildDelaunay(Triangulation& T, const std::vector<double>& points,
 struct NearEnds {
   bool snap = false;
   std::vector<std::pair<uint32_t, uint32_t>> found;
+  // Ends beyond the reach but within kSliverUlps, never snapped: a message about a missed
+  // target names those near it.
+  std::vector<std::pair<uint32_t, uint32_t>> close;
 };
 
 // Inserts every input segment as a chain of fixed edges, splitting it at vertices that lie

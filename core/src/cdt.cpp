@@ -85,13 +85,16 @@ class SegmentInserter {
       for (uint32_t end : input_.segments) segmentEnds_[canonical_[end]] = 1;
     }
     const double *a = segmentEnd(piece.seg, 0), *b = segmentEnd(piece.seg, 1);
-    if (!(nearSegment(a, b, P(y)) && dot2d(P(y), a, b) < 0 &&
+    const bool end = segmentEnds_[y];
+    if (!(nearLine(a, b, P(y), end ? kSliverUlps : kRoundingUlps) && dot2d(P(y), a, b) < 0 &&
           dot2d(P(y), P(piece.from), P(piece.to)) < 0))
       return false;
-    if (!segmentEnds_[y]) return true;
-    if (nearEnds_.found.empty() || nearEnds_.found.back() != std::make_pair(y, piece.seg))
-      nearEnds_.found.push_back({y, piece.seg});  // (a walk may pass it more than once)
-    return nearEnds_.snap;
+    if (!end) return true;
+    const bool within = nearLine(a, b, P(y));
+    auto& list = within ? nearEnds_.found : nearEnds_.close;
+    if (list.empty() || list.back() != std::make_pair(y, piece.seg))
+      list.push_back({y, piece.seg});  // (a walk may pass it more than once)
+    return within && nearEnds_.snap;
   }
   std::vector<uint8_t> segmentEnds_;  // per input vertex (made when first asked)
   // The piece is to run through vertex y: its two halves, the first on top.
@@ -373,6 +376,7 @@ StepResult insertSegments(Triangulation& T, const Pslg& input,
                           const std::vector<uint32_t>& canonical, Stats& stats,
                           const Budget& budget, NearEnds& nearEnds) {
   nearEnds.found.clear();
+  nearEnds.close.clear();
   SegmentInserter inserter(T, input, canonical, budget, nearEnds);
   size_t n = input.segmentCount();
   // Rounded crossing points can create a few more crossings; a budget far above any real

@@ -1,9 +1,11 @@
 #include "domain_angles.h"
 
+#include "acutemesh/predicates.h"
 #include "build.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace acutemesh::detail {
@@ -68,13 +70,29 @@ std::vector<DomainCorner> domainCornersBelow(const Triangulation& T, double degr
 }
 
 NamedCorners::NamedCorners(const Triangulation& T, const std::vector<uint32_t>& inputOf,
-                           int exponent)
+                           int exponent, const Pslg& input,
+                           const std::vector<std::pair<uint32_t, uint32_t>>& slivers)
     : exponent_(exponent) {
   for (const DomainCorner& c : domainCornersBelow(T, kNamedCorner)) {
     const double* p = T.point(c.vertex);
     corners_.push_back({c.vertex < inputOf.size() ? inputOf[c.vertex] : kNone, reported(p[0]),
                         reported(p[1]), c.degrees});
   }
+  for (auto [v, s] : slivers) {
+    const double* p = T.point(v);
+    const double* a = &input.points[2 * size_t(input.segments[2 * size_t(s)])];
+    const double* b = &input.points[2 * size_t(input.segments[2 * size_t(s) + 1])];
+    const double off = std::fabs(orient2d(a, b, p)) / std::hypot(b[0] - a[0], b[1] - a[1]);
+    slivers_.push_back({inputOf[v], s, reported(p[0]), reported(p[1]), reported(off)});
+  }
+}
+
+std::string NamedCorners::name(const Sliver& s) const {
+  char off[32];
+  std::snprintf(off, sizeof off, "%.2g", s.off);
+  return "input vertex " + std::to_string(s.input) + " (" + shortestText(s.x) + ", " +
+         shortestText(s.y) + "), " + off + " off input segment " + std::to_string(s.segment) +
+         " (a sliver too thin to refine: move the vertex onto the segment or away from it)";
 }
 
 std::string NamedCorners::name(const Named& c) const {
@@ -96,18 +114,25 @@ std::string NamedCorners::below(double degrees, size_t most) const {
 }
 
 std::string NamedCorners::nearest(const std::vector<double>& xy) const {
+  // Corners numbered first, then slivers (k >= corners_.size()).
   std::vector<size_t> named;
-  for (size_t i = 0; i + 1 < xy.size() && !corners_.empty(); i += 2) {
+  const size_t count = corners_.size() + slivers_.size();
+  for (size_t i = 0; i + 1 < xy.size() && count > 0; i += 2) {
     size_t best = 0;
     double closest = INFINITY;
-    for (size_t k = 0; k < corners_.size(); ++k) {
-      const double dx = corners_[k].x - xy[i], dy = corners_[k].y - xy[i + 1];
+    for (size_t k = 0; k < count; ++k) {
+      const bool corner = k < corners_.size();
+      const double x = corner ? corners_[k].x : slivers_[k - corners_.size()].x;
+      const double y = corner ? corners_[k].y : slivers_[k - corners_.size()].y;
+      const double dx = x - xy[i], dy = y - xy[i + 1];
       if (dx * dx + dy * dy < closest) closest = dx * dx + dy * dy, best = k;
     }
     if (std::find(named.begin(), named.end(), best) == named.end()) named.push_back(best);
   }
   std::string text;
-  for (size_t k : named) text += (text.empty() ? "" : "; ") + name(corners_[k]);
+  for (size_t k : named)
+    text += (text.empty() ? "" : "; ") +
+            (k < corners_.size() ? name(corners_[k]) : name(slivers_[k - corners_.size()]));
   return text;
 }
 

@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "acutemesh/acutemesh.h"
 #include "triangulation.h"
 
 namespace acutemesh::detail {
@@ -39,13 +41,16 @@ class NamedCorners {
  public:
   static constexpr double kNamedCorner = 60;
   NamedCorners() = default;
-  NamedCorners(const Triangulation& T, const std::vector<uint32_t>& inputOf, int exponent);
+  // `slivers`: segment ends a hair off a segment (T's vertex, the input segment; NearEnds::close).
+  NamedCorners(const Triangulation& T, const std::vector<uint32_t>& inputOf, int exponent,
+               const Pslg& input, const std::vector<std::pair<uint32_t, uint32_t>>& slivers);
   // A coordinate of T (or of the mesh before it is scaled back), as the caller gave it.
   double reported(double x) const { return std::ldexp(x, exponent_); }
   // "input vertex 7 (0.5, 2), 20 degrees", the corners of at most `degrees` (the smallest
   // `most` of them, then "N in all"); empty if none.
   std::string below(double degrees, size_t most) const;
-  // The corners nearest the points xy (x, y per point, as reported), each named once.
+  // The corners nearest the points xy (x, y per point, as reported), each named once; a sliver
+  // end nearer than any corner is named instead.
   std::string nearest(const std::vector<double>& xy) const;
 
  private:
@@ -53,8 +58,14 @@ class NamedCorners {
     uint32_t input;  // kNone: a segment crossing
     double x, y, degrees;
   };
+  struct Sliver {
+    uint32_t input, segment;
+    double x, y, off;
+  };
   std::string name(const Named& c) const;
+  std::string name(const Sliver& s) const;
   std::vector<Named> corners_;  // smallest first
+  std::vector<Sliver> slivers_;
   int exponent_ = 0;
 };
 

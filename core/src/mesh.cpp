@@ -712,8 +712,10 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
   bool belowFloor = false;
   T.inside = std::move(inside);
   T.inside.resize(T.tri.size() / 3, 0);
-  const detail::NamedCorners corners(refining ? detail::NamedCorners(T, inputOf, exponent)
-                                              : detail::NamedCorners());
+  const detail::NamedCorners corners(refining
+                                         ? detail::NamedCorners(T, inputOf, exponent, input,
+                                                                nearEnds.close)
+                                         : detail::NamedCorners());
   // (The domain's corners for every constrained mode, so that a CDT's --stats says what a
   // refinement could reach; Delaunay ignores the segments.)
   if (options.mode != Mode::Delaunay) {

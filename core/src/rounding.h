@@ -11,21 +11,27 @@
 namespace acutemesh::detail {
 
 // Rounded constructions (segment crossings and split points) leave a Steiner point a few
-// units in the last place off its segment. The reach allowed is kRoundingUlps ulps of the
-// largest coordinate involved.
-constexpr double kRoundingUlps = 1024;
+// units in the last place off its segment, and refinement folds slivers thinner than this
+// (NearEnds, build.h). The reach allowed is kRoundingUlps ulps of the largest coordinate
+// involved (docs/TUNING.md).
+constexpr double kRoundingUlps = 4096;
+// Segment ends this near a segment but beyond the reach make slivers that refinement may not
+// resolve either: a missed target near one names it (NamedCorners).
+constexpr double kSliverUlps = 65536;
 
-inline double roundingReach(const double* a, const double* b, const double* c) {
+inline double roundingReach(const double* a, const double* b, const double* c,
+                            double ulps = kRoundingUlps) {
   double m = 0;
   for (const double* p : {a, b, c}) m = std::max({m, std::fabs(p[0]), std::fabs(p[1])});
-  return kRoundingUlps * std::numeric_limits<double>::epsilon() *
+  return ulps * std::numeric_limits<double>::epsilon() *
          std::max(m, std::numeric_limits<double>::min());
 }
 
-// Whether the line ab passes through the square of half-side roundingReach around c (exact
-// orientation of its corners).
-inline bool nearLine(const double* a, const double* b, const double* c) {
-  double r = roundingReach(a, b, c);
+// Whether the line ab passes through the square of half-side roundingReach (of `ulps`) around c
+// (exact orientation of its corners).
+inline bool nearLine(const double* a, const double* b, const double* c,
+                     double ulps = kRoundingUlps) {
+  double r = roundingReach(a, b, c, ulps);
   int below = 0, above = 0;
   for (double dx : {-r, r})
     for (double dy : {-r, r}) {
