@@ -156,13 +156,15 @@ int run(int argc, char** argv) {
 
 // glibc hands large freed blocks back to the kernel, and the next copy of a triangulation (each
 // strategy's run, each improvement round) faults the same memory in again, at a real cost on
-// VMs (docs/TUNING.md). The CLI runs once and exits, so freed memory stays in the process.
+// VMs (docs/TUNING.md). The CLI runs once and exits, so freed memory stays in the process; and
+// in one arena, where what one thread frees another reuses (a part's state on each thread).
 namespace {
 void keepFreedMemory() {
 #ifdef __GLIBC__
   mallopt(M_MMAP_THRESHOLD, 32 << 20);   // glibc's largest: bigger blocks are mapped anyway
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   mallopt(M_TOP_PAD, 64 << 20);          // grow the heap in large steps (untouched: no cost)
+  mallopt(M_ARENA_MAX, 1);
 #endif
 }
 }  // namespace
