@@ -4,10 +4,12 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "acutemesh/acutemesh.h"
+#include "acutemesh/predicates.h"
 #include "exact.h"
 #include "progress.h"
 #include "triangulation.h"
@@ -67,6 +69,12 @@ struct NearEnds {
   // target names those near it.
   std::vector<std::pair<uint32_t, uint32_t>> close;
 };
+// How far point p lies off the line of input segment `segment` (in input units).
+inline double offSegment(const Pslg& input, uint32_t segment, const double* p) {
+  const double* a = &input.points[2 * size_t(input.segments[2 * size_t(segment)])];
+  const double* b = &input.points[2 * size_t(input.segments[2 * size_t(segment) + 1])];
+  return std::fabs(orient2d(a, b, p)) / std::hypot(b[0] - a[0], b[1] - a[1]);
+}
 
 // Inserts every input segment as a chain of fixed edges, splitting it at vertices that lie
 // on it and at crossings with other segments (adding the crossing points as vertices).

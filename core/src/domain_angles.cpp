@@ -1,6 +1,5 @@
 #include "domain_angles.h"
 
-#include "acutemesh/predicates.h"
 #include "build.h"
 
 #include <algorithm>
@@ -80,10 +79,8 @@ NamedCorners::NamedCorners(const Triangulation& T, const std::vector<uint32_t>& 
   }
   for (auto [v, s] : slivers) {
     const double* p = T.point(v);
-    const double* a = &input.points[2 * size_t(input.segments[2 * size_t(s)])];
-    const double* b = &input.points[2 * size_t(input.segments[2 * size_t(s) + 1])];
-    const double off = std::fabs(orient2d(a, b, p)) / std::hypot(b[0] - a[0], b[1] - a[1]);
-    slivers_.push_back({inputOf[v], s, reported(p[0]), reported(p[1]), reported(off)});
+    slivers_.push_back(
+        {inputOf[v], s, reported(p[0]), reported(p[1]), reported(offSegment(input, s, p))});
   }
 }
 

@@ -640,9 +640,7 @@ std::string snappedEndsWarning(const Triangulation& T, const Pslg& input,
   const size_t count = size_t(std::unique(ends.begin(), ends.end()) - ends.begin());
   const auto [v, seg] = nearEnds.found.front();
   const double* p = T.point(v);
-  const double* a = &input.points[2 * size_t(input.segments[2 * size_t(seg)])];
-  const double* b = &input.points[2 * size_t(input.segments[2 * size_t(seg) + 1])];
-  const double off = std::fabs(orient2d(a, b, p)) / std::hypot(b[0] - a[0], b[1] - a[1]);
+  const double off = detail::offSegment(input, seg, p);
   char text[320];
   std::snprintf(text, sizeof text,
                 "%zu segment end%s within rounding reach of another segment taken onto it (the "
