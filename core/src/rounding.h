@@ -32,6 +32,16 @@ inline double roundingReach(const double* a, const double* b, const double* c,
 inline bool nearLine(const double* a, const double* b, const double* c,
                      double ulps = kRoundingUlps) {
   double r = roundingReach(a, b, c, ulps);
+  // Most points asked about are far off the line: |ab x ac| is |ab| times c's distance from
+  // it, and the square reaches the line only if that is at most r (|dx| + |dy|). Twice that
+  // plus the cross product's rounding error is beyond doubt (the exact test below is 4x the
+  // cost and most of the segment walk's time).
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  const double px = dx * (c[1] - a[1]), py = dy * (c[0] - a[0]);
+  if (std::fabs(px - py) > 2 * r * (std::fabs(dx) + std::fabs(dy)) +
+                               8 * std::numeric_limits<double>::epsilon() *
+                                   (std::fabs(px) + std::fabs(py)))
+    return false;
   int below = 0, above = 0;
   for (double dx : {-r, r})
     for (double dy : {-r, r}) {
