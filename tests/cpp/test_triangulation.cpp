@@ -2,11 +2,15 @@
 // orientation, the empty-circle property (brute force, exact), vertex removal.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "refine/params.h"
+#include "refine/state.h"
 #include "triangulation.h"
 
 using namespace acutemesh;
@@ -265,4 +269,42 @@ TEST(Triangulation, JournalTakesEveryChangeBack) {
     copy.insert(copy.addVertex(x, y), 0);
   }
   EXPECT_EQ(same(T, copy), "") << "the store went on otherwise than a copy";
+}
+
+// The improvement passes visit every live vertex of the range once: by index on small meshes
+// (their point counts depend on it), and on large ones along a Z-order curve, each vertex near
+// the one before (the cache holds its neighbourhood), where refinement's numbering jumps about.
+TEST(RefineState, VisitOrderIsEveryLiveVertexOnceAndLocalWhenLarge) {
+  auto stepLength = [](const RefineState& s, const std::vector<uint32_t>& order) {
+    double sum = 0;
+    for (size_t i = 1; i < order.size(); ++i)
+      sum += std::hypot(s.P(order[i])[0] - s.P(order[i - 1])[0],
+                        s.P(order[i])[1] - s.P(order[i - 1])[1]);
+    return sum / double(order.size() - 1);
+  };
+  for (size_t n : {size_t(500), kSpatialOrderFrom + 6000}) {
+    RefineState s;
+    s.T = build(randomPoints(n, 5));
+    size_t removed = 0;
+    for (uint32_t v = 7; v < n; v += 13) removed += s.T.removeVertex(v);
+    ASSERT_GT(removed, n / 20);
+    const uint32_t from = 100;
+    std::vector<uint32_t> order, expected;
+    s.visitOrder(from, uint32_t(n), order);
+    for (uint32_t v = from; v < n; ++v)
+      if (s.T.vertexEdge[v] != kNone) expected.push_back(v);
+    if (n < kSpatialOrderFrom) {
+      EXPECT_EQ(order, expected);
+      continue;
+    }
+    EXPECT_GE(order.size(), kSpatialOrderFrom);
+    std::vector<uint32_t> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, expected) << "not every live vertex once";
+    EXPECT_NE(order, expected) << "index order";
+    // (The store numbers vertices along its own insertion order, already local: shuffled, the
+    // refinement's numbering is closer.)
+    std::shuffle(expected.begin(), expected.end(), std::mt19937(1));
+    EXPECT_LT(stepLength(s, order), 0.05 * stepLength(s, expected));
+  }
 }

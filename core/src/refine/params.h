@@ -103,6 +103,9 @@ constexpr double kLargeGain = 0.03;
 // A pair whose joint link has this many edges or more is merged only where one point fits
 // without moving its neighbours: such tries almost never succeed.
 constexpr size_t kMergeLinkEdges = 11;
+// From this many live Steiner points on, the improvement passes visit them in the order of a
+// Z-order curve rather than by age (RefineState::visitOrder).
+constexpr size_t kSpatialOrderFrom = 50000;
 
 // --- Bounds below 90 degrees (descent.h, below90.h) ---------------------------------------
 // The descent starts from a quality mesh with this minimum angle: every bound down to 75

@@ -185,11 +185,13 @@ void Polish::smooth() {
   const Scope& scope = reduce_.scope;
   ProgressRelay* relay = job_.progressRelay();
   const uint32_t count = s_.T.vertexCount();
-  for (uint32_t v = uint32_t(job_.input.vertexCount()); v < s_.T.vertexCount(); ++v) {
-    if ((v & 255) == 0 && relay) {
-      relay->note("improve", double(v) / double(count), count);
+  s_.visitOrder(uint32_t(job_.input.vertexCount()), count, order_);
+  for (size_t i = 0; i < order_.size(); ++i) {
+    if ((i & 255) == 0 && relay) {
+      relay->note("improve", double(i) / double(order_.size()), count);
       relay->poll();
     }
+    const uint32_t v = order_[i];
     if (s_.T.vertexEdge[v] == kNone || (s_.role[v] != kFree && s_.role[v] != kOnSegment) ||
         !scope.owns(v))
       continue;

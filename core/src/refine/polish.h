@@ -47,6 +47,7 @@ class Polish {
   Relocation& relocation_;
   Reduce& reduce_;
   Repair& repair_;
+  std::vector<uint32_t> order_;  // smooth()'s (RefineState::visitOrder)
 };
 
 }  // namespace acutemesh::detail

@@ -247,15 +247,19 @@ bool Reduce::shouldStop(double done) {
   return job_.improvementOver();
 }
 
-// Oldest first: the early, coarse points are the likeliest to have become redundant.
+// Oldest first (RefineState::visitOrder: on small meshes): the early, coarse points are the
+// likeliest to have become redundant.
 void Reduce::removeSteinerPoints(const std::vector<uint8_t>* due, int passes) {
   markDue(due);
+  // (One order for all the passes: removals add no vertex.)
+  s_.visitOrder(uint32_t(job_.input.vertexCount()), s_.T.vertexCount(), order_);
   for (int pass = 0; pass < passes; ++pass) {
     uint32_t removed = 0;
-    for (uint32_t v = 0, count = s_.T.vertexCount(); v < count; ++v) {
+    for (size_t i = 0; i < order_.size(); ++i) {
+      const uint32_t v = order_[i];
       if (!dirty_[v] || s_.T.vertexEdge[v] == kNone || !scope.owns(v)) continue;
       dirty_[v] = 0;
-      if (shouldStop(double(v) / double(count))) return;
+      if (shouldStop(double(i) / double(order_.size()))) return;
       if (!removePoint(v)) continue;
       ++removed;
       scope.record({Step::Remove, v, kNone, kNone, 0, 0});
@@ -281,21 +285,27 @@ uint32_t Reduce::mergePass() {
   const Triangulation& T = s_.T;
   uint32_t merged = 0;
   std::vector<uint8_t> pending = dirty_;  // a pair is tried once a pass: at the turn of the
-                                          // higher index, if due
-  for (uint32_t u = T.vertexCount(); u-- > 0;) {
+                                          // one visited first, if due
+  // Newest first (on small meshes): the points merges make are the likeliest to merge again.
+  s_.visitOrder(uint32_t(job_.input.vertexCount()), T.vertexCount(), order_);
+  std::reverse(order_.begin(), order_.end());
+  rank_.assign(T.vertexCount(), kNone);
+  for (size_t i = 0; i < order_.size(); ++i) rank_[order_[i]] = uint32_t(i);
+  for (size_t i = 0; i < order_.size(); ++i) {
+    const uint32_t u = order_[i];
     bool onSegment = s_.role[u] == kOnSegment;
     if (u >= dirty_.size() || !dirty_[u] || (s_.role[u] != kFree && !onSegment) ||
         T.vertexEdge[u] == kNone || !scope.owns(u))
       continue;
     dirty_[u] = 0;
-    if (shouldStop(1 - double(u) / double(T.vertexCount()))) break;
+    if (shouldStop(double(i) / double(order_.size()))) break;
     // The partners first (free neighbours of a free vertex, the neighbours along its segment
     // of a segment vertex): a failed merge re-inserts u, which renumbers its edges.
     partners_.clear();
     uint32_t e0 = T.vertexEdge[u], e = e0;
     do {
       uint32_t w = T.tri[next(e)];
-      bool triedAtItsTurn = w > u && w < pending.size() && pending[w];
+      bool triedAtItsTurn = w < rank_.size() && rank_[w] < i && pending[w];
       bool partner = w != kGhost && scope.owns(w) &&
                      (onSegment ? s_.role[w] == kOnSegment && T.isFixed(e) : s_.role[w] == kFree);
       if (partner && !triedAtItsTurn) partners_.push_back(w);

@@ -91,6 +91,7 @@ class Reduce {
   std::vector<uint32_t> touched_, hole_, partners_;
   std::vector<Moved> moved_;    // by holeMeetsTarget, for undoMoves
   std::vector<uint8_t> dirty_;  // per vertex: worth another removal / merge try
+  std::vector<uint32_t> order_, rank_;  // the passes' RefineState::visitOrder, and its inverse
   Candidates candidates_;
   uint32_t attempts_ = 0;  // removal and merge attempts so far (shouldStop)
 };

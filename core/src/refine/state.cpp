@@ -1,6 +1,9 @@
 #include "state.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "params.h"
 
 #include "../rounding.h"
 
@@ -72,6 +75,37 @@ bool RefineState::slideOf(uint32_t v, uint32_t ends[2], uint32_t& segment) const
     e = T.opp[prev(e)];
   } while (e != e0);
   return !onSegment || fixedSpokes == 2;
+}
+
+namespace {
+// x's 16 bits spread to the even bits of a 32-bit word.
+uint32_t spread(uint32_t x) {
+  x = (x | (x << 8)) & 0x00FF00FFu;
+  x = (x | (x << 4)) & 0x0F0F0F0Fu;
+  x = (x | (x << 2)) & 0x33333333u;
+  return (x | (x << 1)) & 0x55555555u;
+}
+}  // namespace
+
+void RefineState::visitOrder(uint32_t from, uint32_t to, std::vector<uint32_t>& order) const {
+  order.clear();
+  for (uint32_t v = from; v < to; ++v)
+    if (T.vertexEdge[v] != kNone) order.push_back(v);
+  if (order.size() < kSpatialOrderFrom) return;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (uint32_t v : order)
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], P(v)[k]), hi[k] = std::max(hi[k], P(v)[k]);
+  std::vector<uint64_t> keyed(order.size());  // the curve's index, then the vertex
+  for (size_t i = 0; i < order.size(); ++i) {
+    uint32_t cell[2];
+    for (int k = 0; k < 2; ++k) {
+      const double span = hi[k] > lo[k] ? hi[k] - lo[k] : 1;
+      cell[k] = uint32_t(std::min(65535.0, (P(order[i])[k] - lo[k]) / span * 65536.0));
+    }
+    keyed[i] = (uint64_t(spread(cell[0]) | (spread(cell[1]) << 1)) << 32) | order[i];
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = uint32_t(keyed[i]);
 }
 
 size_t RefineState::liveSteiner(size_t inputVertices) const {
