@@ -206,15 +206,21 @@ const limits = cases.map((c) => `${c.code} ${c.limit} s`).join(', ');
 const runsText = cases.map((c) => `${c.code} ${c.runs}`).join(', ');
 
 // The CLI's warnings with their FILE:LINE and segment numbers taken out, alike ones counted once
-// (the per-segment lines are summed up by a count line of their own).
+// (the per-segment lines are summed up by a count line of their own, and so are a reader's
+// alike lines past the first few: "FILE: N times in all (the first K listed): TEXT").
 function warningSummary(ws) {
   const count = new Map();
   for (const w of ws) {
     if (/^segment \d+ has zero length/.test(w)) continue;
+    const all = /^[^ ]*: (\d+) times in all \(the first (\d+) listed\): (.*)$/.exec(w);
+    if (all) {
+      count.set(all[3], (count.get(all[3]) || 0) + Number(all[1]) - Number(all[2]));
+      continue;
+    }
     const m = w.replace(/^[^ ]*:\d+: /, '');
     count.set(m, (count.get(m) || 0) + 1);
   }
-  return [...count].map(([m, n]) => (n > 1 ? `${m} (${n} listed)` : m)).join('; ');
+  return [...count].map(([m, n]) => (n > 1 ? `${m} (${n} times)` : m)).join('; ');
 }
 const warnLines = cases
   .filter((c) => warningsOf[c.id]?.length)

@@ -22,6 +22,7 @@
 
 #include "acutemesh/io.h"
 #include "fixtures.h"
+#include "io/parse_context.h"
 #include "reference_data.h"
 
 namespace fs = std::filesystem;
@@ -495,6 +496,31 @@ TEST(IoRead, JsonRings) {
             (std::vector<uint32_t>{0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 4}));
   ASSERT_EQ(in.warnings.size(), 1u);
   EXPECT_TRUE(startsWith(in.warnings[0], "r.json:2: dropped the ring's last point"));
+}
+
+// A map's rings are often each closed by repeating the first point: the first few are listed
+// with their lines, and one line counts them all (not thousands of lines), while other
+// warnings keep their places.
+TEST(IoRead, AlikeWarningsListedAFewTimesThenCounted) {
+  std::string text = "{\"rings\": [\n";
+  for (int i = 0; i < 9; ++i) {
+    const std::string x = std::to_string(3 * i);
+    text += std::string(i ? ",\n" : "") + "[[" + x + ", 0], [" + x + ".5, 0], [" + x + ", 1], [" + x + ", 0]]";
+  }
+  text += "\n], \"name\": \"islands\"}";
+  Input in;
+  ParseResult r = parseJson(text, "m.json", in);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_EQ(in.pslg.vertexCount(), 27u);
+  ASSERT_EQ(in.warnings.size(), io::kListedAlike + 2) << ::testing::PrintToString(in.warnings);
+  for (size_t i = 0; i < io::kListedAlike; ++i)
+    EXPECT_EQ(in.warnings[i], "m.json:" + std::to_string(i + 2) +
+                                  ": dropped the ring's last point, a repeat of its first (rings "
+                                  "close implicitly)");
+  EXPECT_EQ(in.warnings[io::kListedAlike],
+            "m.json: 9 times in all (the first 5 listed): dropped the ring's last point, a repeat "
+            "of its first (rings close implicitly)");
+  EXPECT_EQ(in.warnings[io::kListedAlike + 1], "m.json:11: ignored the unknown key \"name\"");
 }
 
 TEST(IoRead, JsonStringsAndEscapes) {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,17 +18,35 @@ namespace acutemesh::io {
 // Vertex indices and item counts must fit 32 bits.
 constexpr uint64_t kMaxIndexCount = std::numeric_limits<uint32_t>::max();
 
+// Of the warnings alike (the same text at other lines) the first kListedAlike are listed, and
+// one more line counts them all (a map's rings each closed by repeating their first point made
+// 3,354 lines for the United States).
+constexpr size_t kListedAlike = 5;
+
 struct Ctx {
   const std::string& name;
   std::vector<std::string>* warnings;
   std::string message;
+  struct Alike {
+    size_t count = 0;
+    size_t line = 0;  // where in *warnings the count stands, once past kListedAlike
+  };
+  std::map<std::string, Alike> alike = {};  // by warning text
 
   bool fail(size_t line, const std::string& what) {
     message = name + ":" + std::to_string(line) + ": " + what;
     return false;
   }
   void warn(size_t line, const std::string& what) {
-    if (warnings) warnings->push_back(name + ":" + std::to_string(line) + ": " + what);
+    if (!warnings) return;
+    Alike& a = alike[what];
+    if (++a.count <= kListedAlike) {
+      warnings->push_back(name + ":" + std::to_string(line) + ": " + what);
+      return;
+    }
+    if (a.count == kListedAlike + 1) a.line = warnings->size(), warnings->emplace_back();
+    (*warnings)[a.line] = name + ": " + std::to_string(a.count) + " times in all (the first " +
+                          std::to_string(kListedAlike) + " listed): " + what;
   }
 };
 
