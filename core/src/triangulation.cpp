@@ -59,6 +59,29 @@ void Triangulation::reserveCapacity(size_t vertices, size_t triangles) {
   if (!inside.empty()) inside.reserve(triangles);
 }
 
+void Triangulation::permuteSlots(const std::vector<uint32_t>& order) {
+  std::vector<uint32_t> to(slots_, kNone);
+  for (size_t i = 0; i < order.size(); ++i) to[order[i]] = uint32_t(i);
+  auto edgeTo = [&](uint32_t e) { return e == kNone ? kNone : 3 * to[e / 3] + e % 3; };
+  auto permute = [&](auto& a, size_t per, auto map) {
+    if (a.empty()) return;
+    std::remove_reference_t<decltype(a)> b(per * order.size());
+    for (size_t i = 0; i < order.size(); ++i)
+      for (size_t k = 0; k < per; ++k) b[per * i + k] = map(a[per * size_t(order[i]) + k]);
+    a.swap(b);
+  };
+  auto same = [](auto x) { return x; };
+  permute(tri, 3, same);
+  permute(opp, 3, edgeTo);
+  permute(fixed, 3, same);
+  permute(wind, 3, same);
+  permute(segment, 3, same);
+  permute(inside, 1, same);
+  for (uint32_t& e : vertexEdge) e = edgeTo(e);
+  slots_ = uint32_t(order.size());
+  freeSlots_.clear();
+}
+
 uint32_t Triangulation::newTriangle() {
   if (!freeSlots_.empty()) {
     uint32_t t = freeSlots_.back();

@@ -107,6 +107,9 @@ class Triangulation {
   uint32_t vertexCount() const { return uint32_t(pts.size() / 2); }
   // Slots in use or on the free list; the arrays may be longer (spare capacity, kNone).
   uint32_t triangleSlots() const { return slots_; }
+  // Renumbers the triangles: the live slots in `order` become slots 0, 1, ..., the free ones
+  // are dropped. Nothing else may hold triangle numbers across it; no journal is kept.
+  void permuteSlots(const std::vector<uint32_t>& order);
   // Sizes the arrays for `count` triangle slots up front (one allocation instead of many).
   void reserveTriangles(size_t count);
   // Room for this many vertices and triangles in all, without filling it: growth up to there

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -307,4 +308,62 @@ TEST(RefineState, VisitOrderIsEveryLiveVertexOnceAndLocalWhenLarge) {
     std::shuffle(expected.begin(), expected.end(), std::mt19937(1));
     EXPECT_LT(stepLength(s, order), 0.05 * stepLength(s, expected));
   }
+}
+
+namespace {
+// Every live triangle as its corners, rotated to start at the smallest, sorted.
+std::vector<std::array<uint32_t, 3>> triangleSet(const Triangulation& T) {
+  std::vector<std::array<uint32_t, 3>> set;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) {
+    if (T.isFree(t)) continue;
+    std::array<uint32_t, 3> c = {T.tri[3 * t], T.tri[3 * t + 1], T.tri[3 * t + 2]};
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    set.push_back(c);
+  }
+  std::sort(set.begin(), set.end());
+  return set;
+}
+}  // namespace
+
+// Renumbering the triangles (RefineState::compactTriangles along the curve, or any order)
+// keeps the triangulation as it was, with twins, vertex edges, fixed edges and segments moved
+// along, and the free slots gone.
+TEST(Triangulation, PermuteSlotsKeepsTheTriangulation) {
+  Triangulation T = build(randomPoints(2000, 9));
+  T.trackSegments = true;
+  T.segment.assign(T.tri.size(), kNone);
+  size_t fixedEdges = 0;
+  for (uint32_t e = 0; e < 3 * T.triangleSlots() && fixedEdges < 40; e += 97)
+    if (!T.isFree(e / 3) && !T.isFixed(e)) T.fixEdge(e, 0, uint32_t(e)), ++fixedEdges;
+  for (uint32_t v = 5; v < 2000; v += 11) T.removeVertex(v);  // (fixed ends refuse: fine)
+  const auto before = triangleSet(T);
+  std::vector<std::pair<uint32_t, uint32_t>> fixedBefore;
+  for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e)
+    if (!T.isFree(e / 3) && T.isFixed(e)) fixedBefore.push_back({T.tri[e], T.segment[e]});
+  std::sort(fixedBefore.begin(), fixedBefore.end());
+  std::vector<uint32_t> order;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t)
+    if (!T.isFree(t)) order.push_back(t);
+  ASSERT_LT(order.size(), T.triangleSlots()) << "no free slot to drop";
+  std::shuffle(order.begin(), order.end(), std::mt19937(4));
+  T.permuteSlots(order);
+  EXPECT_EQ(T.triangleSlots(), order.size());
+  EXPECT_EQ(checkStore(T), "");
+  EXPECT_EQ(triangleSet(T), before);
+  std::vector<std::pair<uint32_t, uint32_t>> fixedAfter;
+  for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e)
+    if (T.isFixed(e)) fixedAfter.push_back({T.tri[e], T.segment[e]});
+  std::sort(fixedAfter.begin(), fixedAfter.end());
+  EXPECT_EQ(fixedAfter, fixedBefore);
+  // Still a working store: points go in and out.
+  for (uint32_t v = 5; v < 200; v += 11) EXPECT_EQ(T.insert(v, 0), v);
+  EXPECT_EQ(checkStore(T), "");
+  EXPECT_EQ(delaunayViolations(T), 0u);
+
+  RefineState s;
+  s.T = build(randomPoints(kSpatialOrderFrom + 1000, 3));
+  const auto all = triangleSet(s.T);
+  s.compactTriangles(0);
+  EXPECT_EQ(checkStore(s.T), "");
+  EXPECT_EQ(triangleSet(s.T), all);
 }

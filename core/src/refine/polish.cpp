@@ -23,6 +23,7 @@ void Polish::run() {
   const Target& target = job_.target;
   if (!target.countsPoints() || repair_.missesBeyondLeft()) return;
   const size_t inputVertices = job_.input.vertexCount();
+  s_.compactTriangles(inputVertices);
   int idleRounds = 0;  // the last rounds in a row that took out no point
   for (int r = 0; r < kPolishRounds && !job_.improvementOver(); ++r) {
     // (Progress: each round half of what is left, as the rounds that end it are not known.)

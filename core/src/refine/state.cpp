@@ -85,6 +85,30 @@ uint32_t spread(uint32_t x) {
   x = (x | (x << 2)) & 0x33333333u;
   return (x | (x << 1)) & 0x55555555u;
 }
+
+
+// Sorts `items` along a Z-order curve of place(item) (x, y; ties by item).
+template <class Place>
+void sortAlongCurve(std::vector<uint32_t>& items, Place place) {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  double p[2];
+  for (uint32_t i : items) {
+    place(i, p);
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  }
+  std::vector<uint64_t> keyed(items.size());  // the curve's index, then the item
+  for (size_t i = 0; i < items.size(); ++i) {
+    place(items[i], p);
+    uint32_t cell[2];
+    for (int k = 0; k < 2; ++k) {
+      const double span = hi[k] > lo[k] ? hi[k] - lo[k] : 1;
+      cell[k] = uint32_t(std::min(65535.0, std::max(0.0, (p[k] - lo[k]) / span * 65536.0)));
+    }
+    keyed[i] = (uint64_t(spread(cell[0]) | (spread(cell[1]) << 1)) << 32) | items[i];
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (size_t i = 0; i < items.size(); ++i) items[i] = uint32_t(keyed[i]);
+}
 }  // namespace
 
 void RefineState::visitOrder(uint32_t from, uint32_t to, std::vector<uint32_t>& order) const {
@@ -92,20 +116,22 @@ void RefineState::visitOrder(uint32_t from, uint32_t to, std::vector<uint32_t>& 
   for (uint32_t v = from; v < to; ++v)
     if (T.vertexEdge[v] != kNone) order.push_back(v);
   if (order.size() < kSpatialOrderFrom) return;
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  for (uint32_t v : order)
-    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], P(v)[k]), hi[k] = std::max(hi[k], P(v)[k]);
-  std::vector<uint64_t> keyed(order.size());  // the curve's index, then the vertex
-  for (size_t i = 0; i < order.size(); ++i) {
-    uint32_t cell[2];
-    for (int k = 0; k < 2; ++k) {
-      const double span = hi[k] > lo[k] ? hi[k] - lo[k] : 1;
-      cell[k] = uint32_t(std::min(65535.0, (P(order[i])[k] - lo[k]) / span * 65536.0));
-    }
-    keyed[i] = (uint64_t(spread(cell[0]) | (spread(cell[1]) << 1)) << 32) | order[i];
-  }
-  std::sort(keyed.begin(), keyed.end());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = uint32_t(keyed[i]);
+  sortAlongCurve(order, [&](uint32_t v, double* p) { p[0] = P(v)[0], p[1] = P(v)[1]; });
+}
+
+void RefineState::compactTriangles(size_t inputVertices) {
+  if (T.journal || liveSteiner(inputVertices) < kSpatialOrderFrom) return;
+  std::vector<uint32_t> order;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t)
+    if (!T.isFree(t)) order.push_back(t);
+  sortAlongCurve(order, [&](uint32_t t, double* p) {
+    int n = 0;
+    p[0] = p[1] = 0;
+    for (int k = 0; k < 3; ++k)
+      if (const uint32_t v = T.tri[3 * t + k]; v != kGhost) p[0] += P(v)[0], p[1] += P(v)[1], ++n;
+    p[0] /= n, p[1] /= n;
+  });
+  T.permuteSlots(order);
 }
 
 size_t RefineState::liveSteiner(size_t inputVertices) const {

@@ -85,6 +85,10 @@ struct RefineState {
   // neighbourhood still in the cache from the one before (index order scatters them: a
   // country's mainland ran at half the triangles per second of a small island).
   void visitOrder(uint32_t from, uint32_t to, std::vector<uint32_t>& order) const;
+  // From kSpatialOrderFrom live Steiner points on: renumbers the triangles along the same curve
+  // (by the middle of their corners), so that a vertex's star lies in a few cache lines rather
+  // than wherever refinement made or freed its slots. Nothing may hold triangle numbers.
+  void compactTriangles(size_t inputVertices);
   // Steiner points in the mesh (vertexCount() also counts those removed).
   size_t liveSteiner(size_t inputVertices) const;
   // Per vertex: 1 for the Steiner points on no input segment (Mesh::vertexKind kFreeVertex).
