@@ -53,6 +53,9 @@ rm -rf "$RUNDIR"
 mkdir -p "$RUNDIR"
 
 # --- build ------------------------------------------------------------------------------------
+# What the CLI is built from, taken now: the report comes minutes later, when the tree may have
+# moved on.
+{ git rev-parse --short HEAD && git status --porcelain -- core; } >"$RUNDIR/built-from.txt" 2>/dev/null || true
 if ! { [[ -f build/CMakeCache.txt && ( -f build/Makefile || -f build/build.ninja ) ]] ||
        cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DACUTEMESH_WERROR=ON; } >build/bench-countries.log 2>&1 ||
    ! cmake --build build --target acutemesh -j"$(nproc)" >>build/bench-countries.log 2>&1 || [[ ! -x build/acutemesh ]]; then

@@ -198,8 +198,11 @@ const search = searchRows.length
 const cache = readText('build/CMakeCache.txt') || '';
 const cacheVar = (k) => cache.match(new RegExp(`^${k}:[A-Z]+=(.*)$`, 'm'))?.[1] ?? '?';
 const compiler = cacheVar('CMAKE_CXX_COMPILER');
-let commit = sh('git rev-parse --short HEAD');
-if (sh('git status --porcelain -- core') !== '') commit += ' + uncommitted core changes';
+// (As bench/countries.sh found the tree before building the CLI; else as it is now.)
+const builtFrom = (readText(path.join(runDir, 'built-from.txt')) || '').trim().split('\n');
+let commit = builtFrom[0] || sh('git rev-parse --short HEAD');
+const dirty = builtFrom[0] ? builtFrom.length > 1 : sh('git status --porcelain -- core') !== '';
+if (dirty) commit += ' + uncommitted core changes';
 const pkg = (p) => sh(`dpkg-query -W -f '\${Version}' ${p}`);
 const today = new Date().toISOString().slice(0, 10);
 const limits = cases.map((c) => `${c.code} ${c.limit} s`).join(', ');

@@ -82,6 +82,17 @@ void Triangulation::permuteSlots(const std::vector<uint32_t>& order) {
   freeSlots_.clear();
 }
 
+void Triangulation::trimToSlots() {
+  auto trim = [&](auto& a, size_t n) {
+    if (a.size() <= n) return;
+    a.resize(n);
+    a.shrink_to_fit();
+  };
+  const size_t halfEdges = 3 * size_t(slots_);
+  trim(tri, halfEdges), trim(opp, halfEdges), trim(fixed, halfEdges);
+  trim(wind, halfEdges), trim(segment, halfEdges), trim(inside, slots_);
+}
+
 uint32_t Triangulation::newTriangle() {
   if (!freeSlots_.empty()) {
     uint32_t t = freeSlots_.back();

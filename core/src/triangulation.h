@@ -110,6 +110,9 @@ class Triangulation {
   // Renumbers the triangles: the live slots in `order` become slots 0, 1, ..., the free ones
   // are dropped. Nothing else may hold triangle numbers across it; no journal is kept.
   void permuteSlots(const std::vector<uint32_t>& order);
+  // Gives back the arrays' spare tail past the slots in use (growth doubles them, and every
+  // copy of the store would carry the tail along).
+  void trimToSlots();
   // Sizes the arrays for `count` triangle slots up front (one allocation instead of many).
   void reserveTriangles(size_t count);
   // Room for this many vertices and triangles in all, without filling it: growth up to there

@@ -367,3 +367,21 @@ TEST(Triangulation, PermuteSlotsKeepsTheTriangulation) {
   EXPECT_EQ(checkStore(s.T), "");
   EXPECT_EQ(triangleSet(s.T), all);
 }
+
+// Trimmed to its slots (the polish does it before copying the state), the store gives back its
+// spare tail, keeps its free slots, and grows again as points go in.
+TEST(Triangulation, TrimToSlotsKeepsTheStoreWorking) {
+  Triangulation T = build(randomPoints(1000, 12));
+  T.reserveTriangles(4 * size_t(T.triangleSlots()));
+  for (uint32_t v = 3; v < 1000; v += 7) T.removeVertex(v);
+  const auto before = triangleSet(T);
+  T.trimToSlots();
+  EXPECT_EQ(T.tri.size(), 3 * size_t(T.triangleSlots()));
+  EXPECT_EQ(T.opp.capacity(), 3 * size_t(T.triangleSlots()));
+  EXPECT_EQ(checkStore(T), "");
+  EXPECT_EQ(triangleSet(T), before);
+  std::vector<double> more = randomPoints(3000, 13);
+  for (size_t i = 0; i < more.size(); i += 2) T.insert(T.addVertex(more[i], more[i + 1]), 0);
+  EXPECT_EQ(checkStore(T), "");
+  EXPECT_EQ(delaunayViolations(T), 0u);
+}

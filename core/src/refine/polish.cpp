@@ -30,6 +30,7 @@ void Polish::run() {
     const ProgressRelay::Part part(job_.reportsProgress() ? job_.budget.progress() : nullptr,
                                    1 - std::ldexp(1.0, -r), 1 - std::ldexp(1.0, -r - 1));
     size_t before = s_.liveSteiner(inputVertices);
+    s_.T.trimToSlots();  // (the undo's copy, and the other half's, without the spare tail)
     RefineState saved = s_;
     if (before >= kSmallPolish)
       roundInHalves(r);
