@@ -86,7 +86,6 @@ uint32_t spread(uint32_t x) {
   return (x | (x << 1)) & 0x55555555u;
 }
 
-
 // Sorts `items` along a Z-order curve of place(item) (x, y; ties by item).
 template <class Place>
 void sortAlongCurve(std::vector<uint32_t>& items, Place place) {
