@@ -592,8 +592,10 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   const bool constrained = options.mode != Mode::Delaunay;
   const uint32_t n = uint32_t(input.vertexCount());
   T.trackSegments = T.trackWinding = constrained;
-  // Each vertex makes about two triangles (ghosts included); sizing up front avoids regrowth.
-  T.reserveTriangles(2 * size_t(n) + 16);
+  // Each vertex makes about two triangles (ghosts included): room up front avoids copies as
+  // the arrays grow (only room: a duplicate vertex makes none, and untouched room costs no
+  // memory).
+  T.reserveCapacity(n, 2 * size_t(n) + 16);
   std::vector<uint32_t> canonical;
   StepResult step = detail::buildDelaunay(T, input.points, canonical, inputOf, budget);
   if (!step.ok()) return step;

@@ -99,7 +99,13 @@ uint32_t Triangulation::newTriangle() {
     freeSlots_.pop_back();
     return t;
   }
-  if (3 * size_t(slots_ + 1) > tri.size()) reserveTriangles(2 * size_t(slots_) + 16);
+  // (An eighth more at a time, within reserveCapacity's room while there is some: the arrays
+  // are filled as they grow, and filled memory is resident.)
+  if (3 * size_t(slots_ + 1) > tri.size()) {
+    const size_t more = size_t(slots_) + std::max<size_t>(slots_ / 8, 1024),
+                 room = tri.capacity() / 3;
+    reserveTriangles(room > size_t(slots_) ? std::min(more, room) : more);
+  }
   if (!inside.empty() && inside.size() < tri.size() / 3) inside.resize(tri.size() / 3, 0);
   return slots_++;
 }

@@ -385,3 +385,32 @@ TEST(Triangulation, TrimToSlotsKeepsTheStoreWorking) {
   EXPECT_EQ(checkStore(T), "");
   EXPECT_EQ(delaunayViolations(T), 0u);
 }
+
+// The slots' arrays are filled (so resident) only a little past the slots in use as they grow,
+// whatever room was set aside: a map with as many duplicate vertices as distinct ones (room
+// for two triangles per vertex) and a store that grows from nothing both stay within an
+// eighth.
+TEST(Triangulation, FilledArraysStayNearTheSlotsInUse) {
+  const std::vector<double> distinct = randomPoints(20000, 14);
+  std::vector<double> twice = distinct;
+  twice.insert(twice.end(), distinct.begin(), distinct.end());
+  Triangulation T;
+  T.reserveCapacity(twice.size() / 2, twice.size() + 16);
+  std::vector<uint32_t> canonical, inputOf;
+  Options options;
+  Budget budget(options);
+  ASSERT_TRUE(buildDelaunay(T, twice, canonical, inputOf, budget).ok());
+  auto filled = [&] { return T.tri.size() / 3; };
+  EXPECT_LE(filled(), T.triangleSlots() + T.triangleSlots() / 8 + 1024);
+  EXPECT_GE(T.tri.capacity() / 3, twice.size());  // (the room stays: no copy was made)
+  EXPECT_EQ(checkStore(T), "");
+
+  Triangulation grown = build(randomPoints(1000, 15));
+  const std::vector<double> more = randomPoints(20000, 16);
+  uint32_t hint = 0;
+  for (size_t i = 0; i < more.size(); i += 2)
+    hint = grown.vertexEdge[grown.insert(grown.addVertex(more[i], more[i + 1]), hint)] / 3;
+  EXPECT_LE(grown.tri.size() / 3, grown.triangleSlots() + grown.triangleSlots() / 8 + 1024);
+  EXPECT_EQ(grown.opp.size(), grown.tri.size());
+  EXPECT_EQ(checkStore(grown), "");
+}
