@@ -38,10 +38,13 @@ void Polish::run() {
       round(false);
     StepResult result = repair_.repairAll();
     size_t after = s_.liveSteiner(inputVertices);
-    if (!result.ok() || repair_.missesBeyondLeft() || after > before) {
+    // A round the budget cut short keeps what it took out where every triangle still meets
+    // the target (the repairs it skipped were not needed): the run returns its best mesh.
+    if (repair_.missesBeyondLeft() || after > before) {
       s_ = std::move(saved);
       return;
     }
+    if (!result.ok()) return;
     idleRounds = after == before ? idleRounds + 1 : 0;
     const bool small = after < kSmallPolish;
     if (small && target.nonObtuse) continue;  // all the rounds: they are cheap there
