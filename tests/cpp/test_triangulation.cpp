@@ -10,6 +10,7 @@
 
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "curve_order.h"
 #include "refine/params.h"
 #include "refine/state.h"
 #include "triangulation.h"
@@ -273,7 +274,7 @@ TEST(Triangulation, JournalTakesEveryChangeBack) {
 }
 
 // The improvement passes visit every live vertex of the range once: by index on small meshes
-// (their point counts depend on it), and on large ones along a Z-order curve, each vertex near
+// (their point counts depend on it), and on large ones along a Hilbert curve, each vertex near
 // the one before (the cache holds its neighbourhood), where refinement's numbering jumps about.
 TEST(RefineState, VisitOrderIsEveryLiveVertexOnceAndLocalWhenLarge) {
   auto stepLength = [](const RefineState& s, const std::vector<uint32_t>& order) {
@@ -284,8 +285,14 @@ TEST(RefineState, VisitOrderIsEveryLiveVertexOnceAndLocalWhenLarge) {
     return sum / double(order.size() - 1);
   };
   for (size_t n : {size_t(500), kSpatialOrderFrom + 6000}) {
+    // (Vertices numbered in the order they go in, as refinement numbers its points: random
+    // here, where the Delaunay build would number them along its own curve.)
+    const std::vector<double> pts = randomPoints(n, 5);
     RefineState s;
-    s.T = build(randomPoints(n, 5));
+    s.T = build({pts.begin(), pts.begin() + 6});
+    uint32_t hint = 0;
+    for (size_t i = 6; i < pts.size(); i += 2)
+      hint = s.T.vertexEdge[s.T.insert(s.T.addVertex(pts[i], pts[i + 1]), hint)] / 3;
     size_t removed = 0;
     for (uint32_t v = 7; v < n; v += 13) removed += s.T.removeVertex(v);
     ASSERT_GT(removed, n / 20);
@@ -302,11 +309,39 @@ TEST(RefineState, VisitOrderIsEveryLiveVertexOnceAndLocalWhenLarge) {
     std::vector<uint32_t> sorted = order;
     std::sort(sorted.begin(), sorted.end());
     EXPECT_EQ(sorted, expected) << "not every live vertex once";
-    EXPECT_NE(order, expected) << "index order";
-    // (The store numbers vertices along its own insertion order, already local: shuffled, the
-    // refinement's numbering is closer.)
-    std::shuffle(expected.begin(), expected.end(), std::mt19937(1));
     EXPECT_LT(stepLength(s, order), 0.05 * stepLength(s, expected));
+  }
+}
+
+// The curve order (curve_order.h) puts every item once, each near the one before, and items at
+// one place in their given order (the Delaunay build keeps the first of equal vertices), both
+// by comparisons (small sets) and by radix passes.
+TEST(CurveOrder, EveryItemOnceLocalAndTiesInOrder) {
+  for (size_t n : {size_t(3000), kRadixFrom + 5000}) {
+    const std::vector<double> pts = randomPoints(n, 6);
+    std::vector<uint32_t> items(2 * n);  // item i and item n + i at the same place
+    for (uint32_t i = 0; i < 2 * n; ++i) items[i] = i;
+    auto place = [&](uint32_t i, double* p) {
+      p[0] = pts[2 * (i % n)], p[1] = pts[2 * (i % n) + 1];
+    };
+    sortAlongCurve(items, place);
+    std::vector<uint32_t> seen(2 * n, 0), at(2 * n);
+    for (size_t k = 0; k < items.size(); ++k) ++seen[items[k]], at[items[k]] = uint32_t(k);
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1u), long(2 * n));
+    size_t inOrder = 0;
+    for (uint32_t i = 0; i < n; ++i) inOrder += at[i] < at[n + i];
+    EXPECT_EQ(inOrder, n) << "items at one place not in their given order";
+    auto stepLength = [&](const std::vector<uint32_t>& order) {
+      double sum = 0, a[2], b[2];
+      for (size_t k = 1; k < order.size(); ++k) {
+        place(order[k - 1], a), place(order[k], b);
+        sum += std::hypot(a[0] - b[0], a[1] - b[1]);
+      }
+      return sum;
+    };
+    std::vector<uint32_t> shuffled = items;
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(2));
+    EXPECT_LT(stepLength(items), 0.05 * stepLength(shuffled));
   }
 }
 

@@ -104,7 +104,7 @@ constexpr double kLargeGain = 0.03;
 // without moving its neighbours: such tries almost never succeed.
 constexpr size_t kMergeLinkEdges = 11;
 // From this many live Steiner points on, the improvement passes visit them in the order of a
-// Z-order curve rather than by age (RefineState::visitOrder).
+// Hilbert curve rather than by age (RefineState::visitOrder, curve_order.h).
 constexpr size_t kSpatialOrderFrom = 50000;
 
 // --- Bounds below 90 degrees (descent.h, below90.h) ---------------------------------------

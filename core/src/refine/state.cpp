@@ -5,6 +5,7 @@
 
 #include "params.h"
 
+#include "../curve_order.h"
 #include "../rounding.h"
 
 namespace acutemesh::detail {
@@ -76,39 +77,6 @@ bool RefineState::slideOf(uint32_t v, uint32_t ends[2], uint32_t& segment) const
   } while (e != e0);
   return !onSegment || fixedSpokes == 2;
 }
-
-namespace {
-// x's 16 bits spread to the even bits of a 32-bit word.
-uint32_t spread(uint32_t x) {
-  x = (x | (x << 8)) & 0x00FF00FFu;
-  x = (x | (x << 4)) & 0x0F0F0F0Fu;
-  x = (x | (x << 2)) & 0x33333333u;
-  return (x | (x << 1)) & 0x55555555u;
-}
-
-// Sorts `items` along a Z-order curve of place(item) (x, y; ties by item).
-template <class Place>
-void sortAlongCurve(std::vector<uint32_t>& items, Place place) {
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  double p[2];
-  for (uint32_t i : items) {
-    place(i, p);
-    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  }
-  std::vector<uint64_t> keyed(items.size());  // the curve's index, then the item
-  for (size_t i = 0; i < items.size(); ++i) {
-    place(items[i], p);
-    uint32_t cell[2];
-    for (int k = 0; k < 2; ++k) {
-      const double span = hi[k] > lo[k] ? hi[k] - lo[k] : 1;
-      cell[k] = uint32_t(std::min(65535.0, std::max(0.0, (p[k] - lo[k]) / span * 65536.0)));
-    }
-    keyed[i] = (uint64_t(spread(cell[0]) | (spread(cell[1]) << 1)) << 32) | items[i];
-  }
-  std::sort(keyed.begin(), keyed.end());
-  for (size_t i = 0; i < items.size(); ++i) items[i] = uint32_t(keyed[i]);
-}
-}  // namespace
 
 void RefineState::visitOrder(uint32_t from, uint32_t to, std::vector<uint32_t>& order) const {
   order.clear();

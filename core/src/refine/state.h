@@ -81,7 +81,7 @@ struct RefineState {
   // for a free point. A point on the hull has ghost triangles: its hull edges still count.
   bool slideOf(uint32_t v, uint32_t ends[2], uint32_t& segment) const;
   // The vertices from..to-1 in the order the improvement passes visit them: by index, or from
-  // kSpatialOrderFrom on along a Z-order curve of their places, so that each try finds its
+  // kSpatialOrderFrom on along a Hilbert curve of their places, so that each try finds its
   // neighbourhood still in the cache from the one before (index order scatters them: a
   // country's mainland ran at half the triangles per second of a small island).
   void visitOrder(uint32_t from, uint32_t to, std::vector<uint32_t>& order) const;
