@@ -93,6 +93,58 @@ void Triangulation::trimToSlots() {
   trim(wind, halfEdges), trim(segment, halfEdges), trim(inside, slots_);
 }
 
+Triangulation::Compact Triangulation::compact() const {
+  Compact c;
+  const size_t halfEdges = 3 * size_t(slots_);
+  c.pts = pts, c.vertexEdge = vertexEdge, c.freeSlots = freeSlots_;
+  c.tri.assign(tri.begin(), tri.begin() + ptrdiff_t(halfEdges));
+  if (!inside.empty()) c.inside.assign(inside.begin(), inside.begin() + ptrdiff_t(slots_));
+  if (trackWinding) c.wind.assign(wind.begin(), wind.begin() + ptrdiff_t(halfEdges));
+  for (size_t e = 0; e < halfEdges; ++e) {
+    const uint32_t seg = trackSegments ? segment[e] : kNone;
+    if (fixed[e] || seg != kNone) c.marked.push_back({uint32_t(e), seg, fixed[e]});
+  }
+  c.slots = slots_, c.rng = rng_;
+  c.trackSegments = trackSegments, c.trackWinding = trackWinding;
+  return c;
+}
+
+void Triangulation::restore(Compact&& c) {
+  pts = std::move(c.pts), vertexEdge = std::move(c.vertexEdge), tri = std::move(c.tri);
+  inside = std::move(c.inside), wind = std::move(c.wind), freeSlots_ = std::move(c.freeSlots);
+  slots_ = c.slots, rng_ = c.rng;
+  trackSegments = c.trackSegments, trackWinding = c.trackWinding;
+  const size_t halfEdges = tri.size();
+  fixed.assign(halfEdges, 0);
+  segment.assign(trackSegments ? halfEdges : 0, kNone);
+  for (const Compact::Marked& m : c.marked) {
+    fixed[m.e] = m.fixed;
+    if (trackSegments) segment[m.e] = m.segment;
+  }
+  // The twins: each half-edge a->b's is the one b->a, found among the half-edges leaving b
+  // (bucketed by the vertex they leave, the ghost vertex last).
+  const uint32_t n = vertexCount();
+  auto bucketOf = [&](uint32_t v) { return v == kGhost ? n : v; };
+  std::vector<uint32_t> first(size_t(n) + 2, 0), leaving;
+  for (size_t e = 0; e < halfEdges; ++e)
+    if (tri[e] != kNone) ++first[bucketOf(tri[e]) + 1];
+  for (size_t v = 1; v < first.size(); ++v) first[v] += first[v - 1];
+  leaving.resize(first.back());
+  std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+  for (size_t e = 0; e < halfEdges; ++e)
+    if (tri[e] != kNone) leaving[fill[bucketOf(tri[e])]++] = uint32_t(e);
+  opp.assign(halfEdges, kNone);
+  for (size_t e = 0; e < halfEdges; ++e) {
+    if (tri[e] == kNone) continue;
+    const uint32_t a = tri[e], b = tri[next(uint32_t(e))], from = bucketOf(b);
+    for (uint32_t i = first[from]; i < first[from + 1]; ++i)
+      if (tri[next(leaving[i])] == a) {
+        opp[e] = leaving[i];
+        break;
+      }
+  }
+}
+
 uint32_t Triangulation::newTriangle() {
   if (!freeSlots_.empty()) {
     uint32_t t = freeSlots_.back();

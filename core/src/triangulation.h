@@ -113,6 +113,25 @@ class Triangulation {
   // Gives back the arrays' spare tail past the slots in use (growth doubles them, and every
   // copy of the store would carry the tail along).
   void trimToSlots();
+  // The store less what its triangles' corners determine (the twins), with edge flags and
+  // segments only where an edge has them: about half a copy of a refined mesh. restore() makes
+  // the very store again (the same slots, twins, free list and walk); a polish round keeps its
+  // way back so. Taken from a store trimmed to its slots.
+  struct Compact {
+    std::vector<double> pts;
+    std::vector<uint32_t> tri, vertexEdge, freeSlots;
+    std::vector<uint8_t> inside;
+    std::vector<int32_t> wind;
+    struct Marked {
+      uint32_t e, segment;
+      uint8_t fixed;
+    };
+    std::vector<Marked> marked;
+    uint32_t slots = 0, rng = 0;
+    bool trackSegments = false, trackWinding = false;
+  };
+  Compact compact() const;
+  void restore(Compact&& c);
   // Sizes the arrays for `count` triangle slots up front (one allocation instead of many).
   void reserveTriangles(size_t count);
   // Room for this many vertices and triangles in all, without filling it: growth up to there

@@ -345,6 +345,43 @@ TEST(CurveOrder, EveryItemOnceLocalAndTiesInOrder) {
   }
 }
 
+// A polish round's way back (Triangulation::Compact) makes the very store again: the same
+// slots, twins, flags, segments and vertex edges, and (free list, walk) the same store after
+// more work.
+TEST(Triangulation, CompactRestoresTheVeryStore) {
+  Triangulation T = build(randomPoints(3000, 17));
+  T.trackSegments = true;
+  T.segment.assign(T.tri.size(), kNone);
+  T.inside.assign(T.tri.size() / 3, 1);
+  for (uint32_t v = 5; v < 3000; v += 11) T.removeVertex(v);  // free slots
+  uint32_t marked = 0;
+  for (uint32_t e = 0; e < 3 * T.triangleSlots() && marked < 40; e += 97)
+    if (!T.isFree(e / 3) && !T.isGhost(e / 3) && !T.isFixed(e)) T.fixEdge(e, 0, marked++);
+  T.trimToSlots();
+  const Triangulation original = T;
+  Triangulation::Compact c = T.compact();
+  EXPECT_EQ(c.marked.size(), 2 * size_t(marked));  // (both halves of each fixed edge)
+  Triangulation restored = build(randomPoints(100, 18));  // something else entirely first
+  restored.restore(std::move(c));
+  auto same = [](const Triangulation& a, const Triangulation& b) {
+    EXPECT_EQ(a.triangleSlots(), b.triangleSlots());
+    EXPECT_EQ(a.tri, b.tri);
+    EXPECT_EQ(a.opp, b.opp);
+    EXPECT_EQ(a.fixed, b.fixed);
+    EXPECT_EQ(a.segment, b.segment);
+    EXPECT_EQ(a.vertexEdge, b.vertexEdge);
+    EXPECT_EQ(a.pts, b.pts);
+    EXPECT_EQ(a.inside, b.inside);
+  };
+  same(restored, original);
+  EXPECT_EQ(checkStore(restored), "");
+  Triangulation again = original;
+  const std::vector<double> more = randomPoints(500, 19);
+  for (Triangulation* t : {&restored, &again})
+    for (size_t i = 0; i < more.size(); i += 2) t->insert(t->addVertex(more[i], more[i + 1]), 0);
+  same(restored, again);
+}
+
 namespace {
 // Every live triangle as its corners, rotated to start at the smallest, sorted.
 std::vector<std::array<uint32_t, 3>> triangleSet(const Triangulation& T) {

@@ -30,8 +30,8 @@ void Polish::run() {
     const ProgressRelay::Part part(job_.reportsProgress() ? job_.budget.progress() : nullptr,
                                    1 - std::ldexp(1.0, -r), 1 - std::ldexp(1.0, -r - 1));
     size_t before = s_.liveSteiner(inputVertices);
-    s_.T.trimToSlots();  // (the undo's copy, and the other half's, without the spare tail)
-    RefineState saved = s_;
+    s_.T.trimToSlots();  // (the way back, and the other half's copy, without the spare tail)
+    RefineState::Compact saved = s_.compact();
     if (before >= kSmallPolish)
       roundInHalves(r);
     else
@@ -41,7 +41,7 @@ void Polish::run() {
     // A round the budget cut short keeps what it took out where every triangle still meets
     // the target (the repairs it skipped were not needed): the run returns its best mesh.
     if (repair_.missesBeyondLeft() || after > before) {
-      s_ = std::move(saved);
+      s_.restore(std::move(saved));
       return;
     }
     if (!result.ok()) return;

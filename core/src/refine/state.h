@@ -70,6 +70,20 @@ struct RefineState {
   }
   // A fixed edge on a segment or the hull (not a chord).
   bool isSubsegment(uint32_t e) const { return T.isFixed(e) && !isChord(e); }
+  // The state without what can be rebuilt (Triangulation::Compact): a polish round's way
+  // back, about half a copy; restore() makes the very state again.
+  struct Compact {
+    Triangulation::Compact T;
+    std::vector<uint8_t> role;
+    std::vector<uint32_t> fanCenter, footOf;
+    std::vector<double> fanRadius;
+  };
+  Compact compact() const { return {T.compact(), role, fanCenter, footOf, fanRadius}; }
+  void restore(Compact&& c) {
+    T.restore(std::move(c.T));
+    role = std::move(c.role), fanCenter = std::move(c.fanCenter), footOf = std::move(c.footOf);
+    fanRadius = std::move(c.fanRadius);
+  }
   // Reserves room for about `vertices` vertices in all (refinement to an area bound).
   void reserve(size_t vertices);
   // Chords are fixed only while refinement runs; the output knows them as plain edges.
