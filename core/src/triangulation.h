@@ -110,8 +110,8 @@ class Triangulation {
   // Renumbers the triangles: the live slots in `order` become slots 0, 1, ..., the free ones
   // are dropped. Nothing else may hold triangle numbers across it; no journal is kept.
   void permuteSlots(const std::vector<uint32_t>& order);
-  // Gives back the arrays' spare tail past the slots in use (growth doubles them, and every
-  // copy of the store would carry the tail along).
+  // Gives back the arrays' spare tail past the slots in use (growth fills ahead of them, and
+  // every copy of the store would carry the tail along).
   void trimToSlots();
   // The store less what its triangles' corners determine (the twins), with edge flags and
   // segments only where an edge has them: about half a copy of a refined mesh. restore() makes

@@ -30,7 +30,7 @@ void Polish::run() {
     const ProgressRelay::Part part(job_.reportsProgress() ? job_.budget.progress() : nullptr,
                                    1 - std::ldexp(1.0, -r), 1 - std::ldexp(1.0, -r - 1));
     size_t before = s_.liveSteiner(inputVertices);
-    s_.T.trimToSlots();  // (the way back, and the other half's copy, without the spare tail)
+    s_.T.trimToSlots();  // (the other half's copy without the spare tail)
     RefineState::Compact saved = s_.compact();
     if (before >= kSmallPolish)
       roundInHalves(r);
