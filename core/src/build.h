@@ -82,6 +82,31 @@ StepResult insertSegments(Triangulation& T, const Pslg& input,
                           const std::vector<uint32_t>& canonical, Stats& stats,
                           const Budget& budget, NearEnds& nearEnds);
 
+// Whether the segments are better inserted along with their ends (triangulateAlongSegments):
+// from kAlongSegmentsFrom segments, mostly in chains (each starting where the one before
+// ended, as rings and polylines are listed), and long against the vertices' spacing (the
+// square root of the bounding box's area per vertex), where each would cross many edges of
+// the Delaunay triangulation of all the vertices. Maps' coastlines are short against it
+// (0.02-0.15) and their segments are mostly Delaunay edges already; a 10^5-edge star
+// polygon's are 26 times longer.
+constexpr size_t kAlongSegmentsFrom = 16384;
+bool alongSegmentsPays(const Pslg& input);
+
+// buildDelaunay and insertSegments in one pass, as CGAL inserts a polyline: each segment's
+// ends are inserted (from where the vertex before went in), then the segment, which then
+// crosses only what the vertices before it made (usually nothing: it is an edge already);
+// the vertices on no segment come last. The same triangulation as the two steps, up to ties
+// among cocircular vertices. T's vertices are the segment ends in the order the segments
+// first name them, then the rest along the curve. Sets `declined` (T then holds no result)
+// where the input needs the general way: a vertex lies within rounding reach of a segment
+// inserted before it (insertSegments would run the segment through it, or list it in
+// nearEnds) or at a crossing point made before it, a segment crosses one on the hull so far, every segment end lies on one line, or
+// anything else fails.
+StepResult triangulateAlongSegments(Triangulation& T, const Pslg& input,
+                                    std::vector<uint32_t>& canonical,
+                                    std::vector<uint32_t>& inputOf, Stats& stats,
+                                    const Budget& budget, NearEnds& nearEnds, bool& declined);
+
 // Marks which triangles belong to the domain (per triangle slot: 1 inside, 0 outside or
 // ghost or free), following options.fill / convexHull and (Triangle fill) the input's hole
 // points. Fill rules need T.trackWinding (and its `wind`).

@@ -17,6 +17,7 @@
 
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "curve_order.h"
 #include "rounding.h"
 
 namespace acutemesh::detail {
@@ -47,6 +48,38 @@ class SegmentInserter {
   }
   void findRepresentatives() {
     size_t n = input_.segmentCount();
+    if (endsBelow_ != kNone) {
+      // Along the segments, the ends of segments not yet inserted have no canonical vertex
+      // yet: the same grouping by their coordinates (canonical vertices are equal points).
+      struct End {
+        double x, y;
+        bool operator<(const End& o) const { return x < o.x || (x == o.x && y < o.y); }
+        bool operator==(const End& o) const { return x == o.x && y == o.y; }
+      };
+      struct Key {
+        End lo, hi;
+        uint32_t seg;
+      };
+      std::vector<Key> keyed(n);
+      for (size_t i = 0; i < n; ++i) {
+        const double *a = &input_.points[2 * size_t(input_.segments[2 * i])],
+                     *b = &input_.points[2 * size_t(input_.segments[2 * i + 1])];
+        End p{a[0], a[1]}, q{b[0], b[1]};
+        keyed[i] = {std::min(p, q), std::max(p, q), uint32_t(i)};
+      }
+      std::sort(keyed.begin(), keyed.end(), [](const Key& l, const Key& r) {
+        if (!(l.lo == r.lo)) return l.lo < r.lo;
+        if (!(l.hi == r.hi)) return l.hi < r.hi;
+        return l.seg < r.seg;
+      });
+      representative_.resize(n);
+      for (size_t i = 0; i < n; ++i)
+        representative_[keyed[i].seg] =
+            i > 0 && keyed[i].lo == keyed[i - 1].lo && keyed[i].hi == keyed[i - 1].hi
+                ? representative_[keyed[i - 1].seg]
+                : keyed[i].seg;
+      return;
+    }
     std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
     for (size_t i = 0; i < n; ++i) {
       uint32_t a = canonical_[input_.segments[2 * i]], b = canonical_[input_.segments[2 * i + 1]];
@@ -80,12 +113,8 @@ class SegmentInserter {
   //   keeps the input as given.
   bool nearlyOnPiece(const Piece& piece, uint32_t y) {
     if (y >= inputCount_) return false;
-    if (segmentEnds_.empty()) {
-      segmentEnds_.assign(inputCount_, 0);
-      for (uint32_t end : input_.segments) segmentEnds_[canonical_[end]] = 1;
-    }
     const double *a = segmentEnd(piece.seg, 0), *b = segmentEnd(piece.seg, 1);
-    const bool end = segmentEnds_[y];
+    const bool end = isSegmentEnd(y);
     if (!(nearLine(a, b, P(y), end ? kSliverUlps : kRoundingUlps) && dot2d(P(y), a, b) < 0 &&
           dot2d(P(y), P(piece.from), P(piece.to)) < 0))
       return false;
@@ -96,7 +125,48 @@ class SegmentInserter {
       list.push_back({y, piece.seg});  // (a walk may pass it more than once)
     return within && nearEnds_.snap;
   }
-  std::vector<uint8_t> segmentEnds_;  // per input vertex (made when first asked)
+  // Whether input vertex y (in T) ends a segment. Along the segments (endsBelow_), the ends
+  // are T's first vertices; otherwise a flag per vertex, made when first asked.
+  bool isSegmentEnd(uint32_t y) {
+    if (endsBelow_ != kNone) return y < endsBelow_;
+    if (segmentEnds_.empty()) {
+      segmentEnds_.assign(inputCount_, 0);
+      for (uint32_t end : input_.segments) segmentEnds_[canonical_[end]] = 1;
+    }
+    return segmentEnds_[y];
+  }
+  std::vector<uint8_t> segmentEnds_;
+
+ public:
+  // Along the segments: T's vertices below `endsBelow` are the segment ends, and a piece that
+  // crosses a fixed edge on the hull so far is not resolved but declined (declined() says
+  // so): its rounded crossing point could bend the hull inward by an ulp, which the vertices
+  // inserted after it outside that edge must be free to cover (Triangulation::
+  // hullFollowsSegments).
+  void insertAlongSegments(uint32_t endsBelow) { endsBelow_ = endsBelow; }
+  bool declined() const { return declined_; }
+  // Whether vertex y, just inserted, lies within rounding reach of a fixed edge opposite it
+  // (not on it: that split it): insertSegments would have run the segment through it.
+  bool nearFixedEdge(uint32_t y) {
+    const uint32_t e0 = T_.vertexEdge[y];
+    uint32_t e = e0;
+    do {
+      const uint32_t f = next(e);  // w->x, opposite y in (y, w, x)
+      if (T_.isFixed(f) && T_.tri[f] != kGhost && T_.tri[next(f)] != kGhost) {
+        const uint32_t seg = T_.segment[f];
+        const double *a = segmentEnd(seg, 0), *b = segmentEnd(seg, 1);
+        if (nearLine(a, b, P(y), isSegmentEnd(y) ? kSliverUlps : kRoundingUlps) &&
+            dot2d(P(y), a, b) < 0)
+          return true;
+      }
+      e = T_.opp[prev(e)];
+    } while (e != e0);
+    return false;
+  }
+
+ private:
+  uint32_t endsBelow_ = kNone;
+  bool declined_ = false;
   // The piece is to run through vertex y: its two halves, the first on top.
   void splitAt(const Piece& piece, uint32_t y) {
     todo_.push_back({y, piece.to, piece.dir, piece.seg});
@@ -335,6 +405,10 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
       }
     while (!split) {
       if (T_.isFixed(h)) {
+        if (endsBelow_ != kNone && (T_.isGhost(h / 3) || T_.isGhost(T_.opp[h] / 3))) {
+          declined_ = true;
+          return {Status::BadInput, "a crossing (declined along the segments)"};
+        }
         if (++crossings_ > crossingBudget || budget_.stop())
           return {budget_.cancelled() ? Status::Cancelled : Status::BadInput,
                   "too many segment crossings to resolve (" + std::to_string(crossings_) + ")"};
@@ -370,27 +444,26 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
   return {};
 }
 
-}  // namespace
-
-StepResult insertSegments(Triangulation& T, const Pslg& input,
-                          const std::vector<uint32_t>& canonical, Stats& stats,
-                          const Budget& budget, NearEnds& nearEnds) {
-  nearEnds.found.clear();
-  nearEnds.close.clear();
-  SegmentInserter inserter(T, input, canonical, budget, nearEnds);
+// Inserts the segments in input order, each after before(s) (which readies its ends), with
+// the warnings for zero-length segments and crossings.
+template <class Before>
+StepResult insertInOrder(SegmentInserter& inserter, const Pslg& input,
+                         const std::vector<uint32_t>& canonical, Stats& stats, Before before) {
   size_t n = input.segmentCount();
   // Rounded crossing points can create a few more crossings; a budget far above any real
   // input's crossing count turns a pathological cascade into an error instead of a hang.
   uint64_t crossingBudget = 64ull * n * n + 4096;
   uint32_t zeroLength = 0;
   for (size_t s = 0; s < n; ++s) {
+    StepResult r = before(s);
+    if (!r.ok()) return r;
     uint32_t a = canonical[input.segments[2 * s]], b = canonical[input.segments[2 * s + 1]];
     if (a == b) {
       if (++zeroLength <= 5)
         stats.warnings.push_back("segment " + std::to_string(s) + " has zero length; dropped");
       continue;
     }
-    StepResult r = inserter.insert(uint32_t(s), crossingBudget);
+    r = inserter.insert(uint32_t(s), crossingBudget);
     if (!r.ok()) {
       r.message = "segment " + std::to_string(s) + ": " + r.message;
       return r;
@@ -402,6 +475,125 @@ StepResult insertSegments(Triangulation& T, const Pslg& input,
     stats.warnings.push_back(std::to_string(inserter.crossings()) +
                              " segment crossings split at new vertices");
   return {};
+}
+
+}  // namespace
+
+StepResult insertSegments(Triangulation& T, const Pslg& input,
+                          const std::vector<uint32_t>& canonical, Stats& stats,
+                          const Budget& budget, NearEnds& nearEnds) {
+  nearEnds.found.clear();
+  nearEnds.close.clear();
+  SegmentInserter inserter(T, input, canonical, budget, nearEnds);
+  return insertInOrder(inserter, input, canonical, stats, [](size_t) { return StepResult{}; });
+}
+
+bool alongSegmentsPays(const Pslg& input) {
+  const size_t n = input.segmentCount(), count = input.vertexCount();
+  if (n < kAlongSegmentsFrom || count < 3) return false;
+  size_t chained = 0;
+  double length = 0, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (size_t s = 0; s < n; ++s) {
+    const uint32_t *a = &input.segments[2 * s], *b = a - 2;
+    if (s > 0) chained += a[0] == b[1] || a[0] == b[0] || a[1] == b[0] || a[1] == b[1];
+    const double *p = &input.points[2 * size_t(a[0])], *q = &input.points[2 * size_t(a[1])];
+    length += std::hypot(q[0] - p[0], q[1] - p[1]);
+  }
+  for (size_t i = 0; i < 2 * count; ++i)
+    lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
+  const double spacing = std::sqrt((hi[0] - lo[0]) * (hi[1] - lo[1]) / double(count));
+  return chained >= n - n / 8 && length / double(n) >= spacing;
+}
+
+StepResult triangulateAlongSegments(Triangulation& T, const Pslg& input,
+                                    std::vector<uint32_t>& canonical,
+                                    std::vector<uint32_t>& inputOf, Stats& stats,
+                                    const Budget& budget, NearEnds& nearEnds, bool& declined) {
+  declined = false;
+  nearEnds.found.clear();
+  nearEnds.close.clear();
+  const uint32_t count = uint32_t(input.vertexCount());
+  // T's vertices: the segment ends in the order the segments first name them, then the
+  // other vertices along the curve. Until vertex k is inserted, canonical[inputOf[k]] is k;
+  // after, the vertex it ended up as (k, or an earlier one at the same place): never above k.
+  canonical.assign(count, kNone);
+  inputOf.clear();
+  inputOf.reserve(count);
+  for (uint32_t end : input.segments)
+    if (canonical[end] == kNone) {
+      canonical[end] = uint32_t(inputOf.size());
+      inputOf.push_back(end);
+    }
+  const uint32_t ends = uint32_t(inputOf.size());
+  std::vector<uint32_t> rest;
+  for (uint32_t i = 0; i < count; ++i)
+    if (canonical[i] == kNone) rest.push_back(i);
+  sortAlongCurve(rest, [&](uint32_t i, double* p) {
+    p[0] = input.points[2 * size_t(i)], p[1] = input.points[2 * size_t(i) + 1];
+  });
+  for (uint32_t i : rest) {
+    canonical[i] = uint32_t(inputOf.size());
+    inputOf.push_back(i);
+  }
+  std::vector<uint32_t>().swap(rest);
+  T.pts.resize(2 * size_t(count));
+  T.vertexEdge.assign(count, kNone);
+  for (uint32_t k = 0; k < count; ++k) {
+    T.pts[2 * size_t(k)] = input.points[2 * size_t(inputOf[k])];
+    T.pts[2 * size_t(k) + 1] = input.points[2 * size_t(inputOf[k]) + 1];
+  }
+  // The first triangle, from segment ends (all of them on a line: the general way).
+  uint32_t b = kNone, c = kNone;
+  auto same = [&](uint32_t j, uint32_t k) {
+    return T.point(j)[0] == T.point(k)[0] && T.point(j)[1] == T.point(k)[1];
+  };
+  for (uint32_t k = 1; k < ends && b == kNone; ++k)
+    if (!same(k, 0)) b = k;
+  for (uint32_t k = b == kNone ? ends : b + 1; k < ends && c == kNone; ++k)
+    if (orient2d(T.point(0), T.point(b), T.point(k)) != 0) c = k;
+  if (c == kNone) {
+    declined = true;
+    return {};
+  }
+  T.init(0, b, c);
+  // Segments on the hull so far must let later vertices outside them in.
+  T.hullFollowsSegments = false;
+
+  SegmentInserter inserter(T, input, canonical, budget, nearEnds);
+  inserter.insertAlongSegments(ends);
+  uint32_t inserted = 1, hint = T.vertexEdge[0] / 3;
+  // Inserts T's vertices up to `last`, each from where the one before went in.
+  auto insertUpTo = [&](uint32_t last) -> StepResult {
+    for (; inserted <= last; ++inserted) {
+      const uint32_t k = inserted;
+      if ((k & 0xFFFF) == 0 && budget.stop())
+        return {budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
+                "stopped while triangulating the input vertices"};
+      uint32_t r = k;
+      if (k != b && k != c) {
+        r = T.insert(k, hint);
+        if (r == kNone)
+          return {Status::BadInput, "could not locate vertex " + std::to_string(inputOf[k])};
+        // (At a crossing point made before it: two steps would have made that crossing there.)
+        if (r >= count || (r == k && inserter.nearFixedEdge(k))) {
+          declined = true;
+          return {Status::BadInput, "a vertex at or beside a segment (declined along the segments)"};
+        }
+      }
+      canonical[inputOf[k]] = r;
+      hint = T.vertexEdge[r] / 3;
+    }
+    return {};
+  };
+  StepResult step = insertInOrder(inserter, input, canonical, stats, [&](size_t s) {
+    return insertUpTo(std::max(canonical[input.segments[2 * s]],
+                               canonical[input.segments[2 * s + 1]]));
+  });
+  if (step.ok()) step = insertUpTo(count - 1);
+  T.hullFollowsSegments = true;
+  // (And anything else this way could not do: the general way says what is wrong, if anything.)
+  declined = declined || inserter.declined() || step.status == Status::BadInput;
+  return declined ? StepResult{} : step;
 }
 
 }  // namespace acutemesh::detail

@@ -597,18 +597,38 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   // memory).
   T.reserveCapacity(n, 2 * size_t(n) + 16);
   std::vector<uint32_t> canonical;
-  StepResult step = detail::buildDelaunay(T, input.points, canonical, inputOf, budget);
-  if (!step.ok()) return step;
-  for (uint32_t i = 0; i < n; ++i) stats.duplicates += inputOf[canonical[i]] != i;
-  if (stats.duplicates)
-    stats.warnings.push_back(std::to_string(stats.duplicates) +
-                             " duplicate vertices merged into earlier equal ones");
-  clock.end("delaunay", constrained ? "segments" : "domain");
-  if (constrained) {
-    step = detail::insertSegments(T, input, canonical, stats, budget, nearEnds);
-    if (!step.ok()) return step;
-    clock.end("segments", "domain");
+  auto countDuplicates = [&] {
+    for (uint32_t i = 0; i < n; ++i) stats.duplicates += inputOf[canonical[i]] != i;
+    if (stats.duplicates)
+      stats.warnings.push_back(std::to_string(stats.duplicates) +
+                               " duplicate vertices merged into earlier equal ones");
+  };
+  bool declined = true;
+  StepResult step;
+  if (constrained && detail::alongSegmentsPays(input)) {
+    // One pass, timed as the segments' phase (the Delaunay phase is then empty).
+    clock.end("delaunay", "segments");
+    step = detail::triangulateAlongSegments(T, input, canonical, inputOf, stats, budget,
+                                            nearEnds, declined);
+    if (declined) {
+      stats.warnings.resize(warningsBefore);
+      T = Triangulation{};
+      T.trackSegments = T.trackWinding = true;
+      T.reserveCapacity(n, 2 * size_t(n) + 16);
+    } else {
+      if (!step.ok()) return step;
+      countDuplicates();
+    }
   }
+  if (declined) {
+    step = detail::buildDelaunay(T, input.points, canonical, inputOf, budget);
+    if (!step.ok()) return step;
+    countDuplicates();
+    if (stats.phases.size() == phasesBefore) clock.end("delaunay", constrained ? "segments" : "domain");
+    if (constrained) step = detail::insertSegments(T, input, canonical, stats, budget, nearEnds);
+    if (!step.ok()) return step;
+  }
+  if (constrained) clock.end("segments", "domain");
   Options domainOptions = options;
   if (!constrained) domainOptions.fill = FillRule::Triangle;
   const bool keepHull = !constrained || options.convexHull || input.segments.empty();

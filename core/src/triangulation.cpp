@@ -360,7 +360,7 @@ bool Triangulation::inCircumcircle(uint32_t t, uint32_t p) const {
 
 bool Triangulation::mustFlip(uint32_t e) const {
   if (fixed[e]) return false;
-  if (tri[e] == kGhost || tri[next(e)] == kGhost) {
+  if (hullFollowsSegments && (tri[e] == kGhost || tri[next(e)] == kGhost)) {
     // A spoke to infinity between two hull edges. Where a hull edge is a segment, a rounded
     // split point on it may bend the hull inward by an ulp; flipping the spoke would wrap a
     // sliver triangle around that bend, so the hull is left as the segments make it.

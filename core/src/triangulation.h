@@ -83,6 +83,10 @@ class Triangulation {
     trackWinding = false;
     std::vector<int32_t>().swap(wind);  // (assigning {} would keep its capacity)
   }
+  // Where a hull edge is a segment, the hull is left as the segments make it (mustFlip): a
+  // rounded split point on it may bend it inward by an ulp. Off while the segments are
+  // inserted along with their ends (triangulateAlongSegments): later vertices lie outside.
+  bool hullFollowsSegments = true;
   std::vector<uint32_t> vertexEdge;  // per vertex: a half-edge leaving it, kNone if unused
   // Per triangle, kept when non-empty (refinement): 1 if the triangle is in the domain. Splits
   // pass it to the pieces; flips never cross a fixed edge, so both sides always agree.

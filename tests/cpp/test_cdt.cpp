@@ -3,13 +3,18 @@
 // crossings, overlaps and vertices on segments are resolved.
 #include <gtest/gtest.h>
 
+#include <dirent.h>
+
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <random>
 #include <string>
 
+#include "acutemesh/io.h"
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "rounding.h"
 #include "triangulation.h"
 
 using namespace acutemesh;
@@ -35,6 +40,56 @@ Built buildCdt(const Pslg& in, bool snapNearEnds = false) {
   b.nearEnds.snap = snapNearEnds;
   if (b.result.ok()) b.result = insertSegments(b.T, in, b.canonical, b.stats, budget, b.nearEnds);
   return b;
+}
+
+// The same, in one pass along the segments (triangulateAlongSegments); `declined` where it
+// leaves the input to the two steps.
+Built buildAlong(const Pslg& in, bool& declined, bool snapNearEnds = false) {
+  Built b;
+  b.T.trackSegments = b.T.trackWinding = true;
+  Options options;
+  Budget budget(options);
+  std::vector<uint32_t> inputOf;
+  b.nearEnds.snap = snapNearEnds;
+  b.result = triangulateAlongSegments(b.T, in, b.canonical, inputOf, b.stats, budget, b.nearEnds,
+                                      declined);
+  return b;
+}
+
+// The fixed edges by their ends' coordinates, sorted.
+std::vector<std::array<double, 4>> fixedEdges(const Triangulation& T) {
+  std::vector<std::array<double, 4>> edges;
+  for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e) {
+    if (T.isFree(e / 3) || !T.fixed[e] || T.tri[e] == kGhost || T.tri[next(e)] == kGhost) continue;
+    const double *p = T.point(T.tri[e]), *q = T.point(T.tri[next(e)]);
+    if (std::make_pair(p[0], p[1]) < std::make_pair(q[0], q[1])) edges.push_back({p[0], p[1], q[0], q[1]});
+  }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+size_t realTriangles(const Triangulation& T) {
+  size_t n = 0;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t) n += !T.isFree(t) && !T.isGhost(t);
+  return n;
+}
+
+// A random star-shaped polygon: sorted random angles, radii in [0.5, 1].
+Pslg starPolygon(int n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> angles(n);
+  for (double& a : angles) a = 2 * M_PI * u(rng);
+  std::sort(angles.begin(), angles.end());
+  Pslg in;
+  for (int i = 0; i < n; ++i) {
+    const double r = 0.5 + 0.5 * u(rng);
+    in.points.push_back(r * std::cos(angles[i]));
+    in.points.push_back(r * std::sin(angles[i]));
+    in.segments.push_back(i);
+    in.segments.push_back((i + 1) % n);
+  }
+  return in;
 }
 
 // Every non-fixed edge between two real triangles is locally Delaunay.
@@ -213,20 +268,8 @@ TEST(Cdt, SegmentAlongHullThroughCollinearVertex) {
 // Segments that cross many edges (a star polygon with random radii, as bench/gen.mjs makes):
 // the crossed triangles give way to the triangulations of the two sides at once.
 TEST(Cdt, StarPolygonSegmentsCrossManyEdges) {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(0, 1);
   const int n = 3000;
-  std::vector<double> angles(n);
-  for (double& a : angles) a = 2 * M_PI * u(rng);
-  std::sort(angles.begin(), angles.end());
-  Pslg in;
-  for (int i = 0; i < n; ++i) {
-    const double r = 0.5 + 0.5 * u(rng);
-    in.points.push_back(r * std::cos(angles[i]));
-    in.points.push_back(r * std::sin(angles[i]));
-    in.segments.push_back(i);
-    in.segments.push_back((i + 1) % n);
-  }
+  const Pslg in = starPolygon(n, 5);
   Built b = buildCdt(in);
   expectValidCdt(in, b);
   EXPECT_EQ(b.T.vertexCount(), uint32_t(n));
@@ -293,4 +336,185 @@ TEST(Cdt, SegmentEndNearASegmentSnappedOnlyWhenAsked) {
     EXPECT_EQ(toTip != kNone && b.T.fixed[toTip] && onward != kNone && b.T.fixed[onward], snap);
     EXPECT_EQ(b.T.vertexCount(), in.vertexCount());  // (no crossing)
   }
+}
+
+namespace {
+
+// Whether a path of fixed edges runs from a to b, each step strictly closer to b along a->b,
+// through crossing points (index >= inputCount) and vertices within rounding reach of the
+// segment (what validate() grants a chain).
+bool isFixedChainWithinReach(const Triangulation& T, uint32_t a, uint32_t b, uint32_t inputCount) {
+  std::vector<uint32_t> stack{a};
+  std::vector<uint8_t> seen(T.vertexCount(), 0);
+  while (!stack.empty()) {
+    const uint32_t at = stack.back();
+    stack.pop_back();
+    if (at == b) return true;
+    if (seen[at]) continue;
+    seen[at] = 1;
+    uint32_t e0 = T.vertexEdge[at], e = e0;
+    do {
+      const uint32_t w = T.tri[next(e)];
+      if (T.fixed[e] && w != kGhost &&
+          (w == b || ((w >= inputCount || nearLine(T.point(a), T.point(b), T.point(w))) &&
+                      dot2d(T.point(w), T.point(at), T.point(b)) < 0 &&
+                      dot2d(T.point(at), T.point(w), T.point(b)) > 0)))
+        stack.push_back(w);
+      e = T.opp[prev(e)];
+    } while (e != e0);
+  }
+  return false;
+}
+
+// Along the segments or in two steps, the same constrained Delaunay triangulation: the same
+// fixed edges, as many triangles (cocircular vertices may tie differently), the same vertices
+// found near segments; where `sameRoutes` is false, a valid one whose segments may take other
+// routes within rounding reach. Returns whether the one pass took the input.
+bool expectSameCdtAlong(const Pslg& in, bool snap = false, bool sameRoutes = true) {
+  bool declined = false;
+  const Built along = buildAlong(in, declined, snap);
+  if (declined) return false;
+  const Built twoSteps = buildCdt(in, snap);
+  EXPECT_EQ(along.result.ok(), twoSteps.result.ok()) << along.result.message << " / " << twoSteps.result.message;
+  if (!along.result.ok() || !twoSteps.result.ok()) return true;
+  EXPECT_EQ(brokenLinks(along.T) + invertedTriangles(along.T) + nonDelaunayEdges(along.T), 0u);
+  for (size_t s = 0; s < in.segmentCount(); ++s) {  // (where the two steps' is: fuzz findings')
+    const uint32_t *ends = &in.segments[2 * s], count = uint32_t(in.vertexCount());
+    const uint32_t a = along.canonical[ends[0]], b = along.canonical[ends[1]];
+    if (a != b && isFixedChainWithinReach(twoSteps.T, twoSteps.canonical[ends[0]], twoSteps.canonical[ends[1]], count)) {
+      EXPECT_TRUE(isFixedChainWithinReach(along.T, a, b, count)) << "segment " << s;
+    }
+  }
+  EXPECT_EQ(realTriangles(along.T), realTriangles(twoSteps.T));
+  if (!sameRoutes) return true;
+  for (size_t s = 0; s < in.segmentCount(); ++s) {  // (a fuzz finding's rounded chain fails both)
+    const uint32_t *ends = &in.segments[2 * s], count = uint32_t(in.vertexCount());
+    const uint32_t a = along.canonical[ends[0]], b = along.canonical[ends[1]];
+    const uint32_t c = twoSteps.canonical[ends[0]], d = twoSteps.canonical[ends[1]];
+    if (a != b || c != d) {
+      EXPECT_EQ(isFixedChain(along.T, a, b, count), isFixedChain(twoSteps.T, c, d, count)) << "segment " << s;
+    }
+  }
+  EXPECT_TRUE(fixedEdges(along.T) == fixedEdges(twoSteps.T));
+  EXPECT_EQ(along.T.vertexCount(), twoSteps.T.vertexCount());  // (crossing points)
+  EXPECT_EQ(along.stats.warnings, twoSteps.stats.warnings);
+  for (size_t i = 0; i < in.vertexCount(); ++i) {  // (duplicates merged alike)
+    EXPECT_EQ(along.T.point(along.canonical[i])[0], twoSteps.T.point(twoSteps.canonical[i])[0]);
+    EXPECT_EQ(along.T.point(along.canonical[i])[1], twoSteps.T.point(twoSteps.canonical[i])[1]);
+  }
+  EXPECT_EQ(along.nearEnds.found.size(), twoSteps.nearEnds.found.size());
+  EXPECT_EQ(along.nearEnds.close.size(), twoSteps.nearEnds.close.size());
+  return true;
+}
+
+}  // namespace
+
+// The one pass along the segments (which mesh() takes for long chained segments, as on the
+// 10^5-edge star polygon): star polygons (each segment crosses many Delaunay edges; the hull
+// grows past segments on it), random walks on a small grid (crossings, overlaps, vertices on
+// segments, cocircular and repeated vertices, returns), and every .poly fixture that meshes
+// without scaling, bad and fuzzed ones included.
+TEST(Cdt, AlongTheSegmentsTheSameCdtAsInTwoSteps) {
+  for (uint64_t seed : {1, 2, 3}) {
+    SCOPED_TRACE("star " + std::to_string(seed));
+    EXPECT_TRUE(expectSameCdtAlong(starPolygon(2000, seed)));
+  }
+  std::mt19937_64 rng(11);
+  int taken = 0, walks = 60;
+  for (int round = 0; round < walks; ++round) {
+    SCOPED_TRACE("walk " + std::to_string(round));
+    Pslg in;
+    const int side = 3 + int(rng() % 10), steps = 5 + int(rng() % 60);
+    for (int i = 0; i <= steps; ++i) {
+      in.points.push_back(double(rng() % side));
+      in.points.push_back(double(rng() % side));
+      if (i > 0) in.segments.insert(in.segments.end(), {uint32_t(i - 1), uint32_t(i)});
+    }
+    for (int i = 0; i < 5; ++i)  // (vertices on no segment)
+      in.points.push_back(double(rng() % side) + 0.5), in.points.push_back(double(rng() % side));
+    taken += expectSameCdtAlong(in);
+    if (HasFailure()) return;
+  }
+  EXPECT_GE(taken, 12);  // (the rest cross a segment on the hull so far, or the like)
+
+  int files = 0;
+  for (const std::string& dir : {std::string(ACUTEMESH_TEST_DATA), std::string(ACUTEMESH_TEST_DATA) + "/bad",
+                                std::string(ACUTEMESH_SOURCE_DIR) + "/tests/fuzz/findings"}) {
+    DIR* d = opendir(dir.c_str());
+    ASSERT_NE(d, nullptr) << dir;
+    std::vector<std::string> names;
+    while (dirent* e = readdir(d)) {
+      const std::string name = e->d_name;
+      if (name.size() > 5 && name.substr(name.size() - 5) == ".poly") names.push_back(name);
+    }
+    closedir(d);
+    std::sort(names.begin(), names.end());
+    for (const std::string& name : names) {
+      acutemesh::Input input;
+      if (!acutemesh::readInputFile(dir + "/" + name, input).ok) continue;
+      const Pslg& in = input.pslg;
+      bool indicesOk = in.vertexCount() >= 3 && in.segmentCount() > 0;
+      for (uint32_t v : in.segments) indicesOk = indicesOk && v < in.vertexCount();
+      CoordinateRange range;
+      range.add(in.points);
+      int exponent = 0;
+      if (!indicesOk || !range.finite || !exactScale(range, exponent) || exponent != 0) continue;
+      Options cdt;
+      cdt.mode = Mode::Cdt;
+      if (mesh(in, cdt).status != Status::Ok) continue;
+      SCOPED_TRACE(name);
+      // (Vertices 0 and 1 an ulp apart and two segments from them an ulp apart: both ways
+      // route one of the two through the other's end, not the same one.)
+      const bool sameRoutes = name != "segment-ends-outside-an-ulp-above.poly";
+      for (bool snap : {false, true}) expectSameCdtAlong(in, snap, sameRoutes);
+      ++files;
+      if (HasFailure()) return;
+    }
+  }
+  EXPECT_GT(files, 20);
+}
+
+// A segment end within rounding reach of a segment (Canada's spike, as above): inserted after
+// the segment, the one pass leaves it to the two steps, which run the segment through it;
+// inserted before it (here in the first triangle), the segment's walk finds it as theirs does.
+TEST(Cdt, AlongTheSegmentsDeclinesAnEndBesideAnEarlierSegment) {
+  Pslg in;
+  in.points = {304.044414507, 52.7809173497, 304.047111935, 52.7796528742, 304.045763221,
+               52.7802851121, 304.047111935, 52.7802851119, 304.04846065, 52.779, 304.044, 52.779};
+  in.segments = {5, 0, 0, 1, 1, 2, 2, 3, 3, 1, 1, 4, 4, 5};
+  bool declined = false;
+  buildAlong(in, declined, true);
+  EXPECT_TRUE(declined);
+  in.segments = {0, 1, 1, 2, 2, 3, 3, 1, 1, 4, 4, 5, 5, 0};
+  for (bool snap : {false, true}) {
+    SCOPED_TRACE(snap);
+    EXPECT_TRUE(expectSameCdtAlong(in, snap));
+    const Built b = buildAlong(in, declined, snap);
+    ASSERT_EQ(b.nearEnds.found.size(), 1u);
+    const uint32_t toTip = b.T.findEdge(b.canonical[0], b.canonical[2]);
+    EXPECT_EQ(toTip != kNone && b.T.fixed[toTip], snap);
+  }
+}
+
+// mesh() takes the one pass for a large star polygon (long chained segments): its CDT is
+// the polygon's n - 2 triangles, valid.
+TEST(Cdt, MeshTakesTheOnePassForALargeStarPolygon) {
+  const int n = int(kAlongSegmentsFrom) + 1000;
+  const Pslg in = starPolygon(n, 7);
+  ASSERT_TRUE(alongSegmentsPays(in));
+  Options options;
+  options.mode = Mode::Cdt;
+  const Result r = mesh(in, options);
+  ASSERT_EQ(r.status, Status::Ok) << r.message;
+  EXPECT_EQ(r.mesh.triangleCount(), size_t(n - 2));
+  const Validation v = validate(in, r.mesh, options);
+  EXPECT_TRUE(v.ok) << (v.errors.empty() ? "" : v.errors[0]);
+  // A map's coastline: short segments against the vertex spacing, mostly Delaunay edges.
+  Pslg ring;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    ring.points.insert(ring.points.end(), {std::cos(a), std::sin(a)});
+    ring.segments.insert(ring.segments.end(), {uint32_t(i), uint32_t((i + 1) % n)});
+  }
+  EXPECT_FALSE(alongSegmentsPays(ring));
 }
