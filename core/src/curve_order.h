@@ -11,21 +11,42 @@
 
 namespace acutemesh::detail {
 
+// The Hilbert curve level by level: at each level, a cell's quadrant bits (x, y), seen
+// through the flip (both complemented: bit 0) and the turn (swapped: bit 1) that the levels
+// above left, give the level's digit (3x ^ y) and the flip and turn for the levels below.
+// A table takes four levels (x's and y's nibbles) at a time: digits and the state after.
+struct HilbertTable {
+  uint8_t digits[4][256], state[4][256];
+};
+constexpr HilbertTable makeHilbertTable() {
+  HilbertTable table{};
+  for (uint32_t start = 0; start < 4; ++start)
+    for (uint32_t nibbles = 0; nibbles < 256; ++nibbles) {
+      uint32_t state = start, digits = 0;
+      for (int level = 3; level >= 0; --level) {
+        uint32_t x = ((nibbles >> (4 + level)) & 1) ^ (state & 1);
+        uint32_t y = ((nibbles >> level) & 1) ^ (state & 1);
+        if (state & 2) {
+          const uint32_t t = x;
+          x = y, y = t;
+        }
+        digits = (digits << 2) | ((3 * x) ^ y);
+        if (y == 0) state ^= x == 1 ? 3 : 2;
+      }
+      table.digits[start][nibbles] = uint8_t(digits);
+      table.state[start][nibbles] = uint8_t(state);
+    }
+  return table;
+}
+inline constexpr HilbertTable kHilbertTable = makeHilbertTable();
+
 // Position of cell (x, y) along the Hilbert curve filling a 2^16 x 2^16 grid.
 inline uint32_t hilbertIndex(uint32_t x, uint32_t y) {
-  uint32_t d = 0;
-  for (uint32_t s = 1u << 15; s > 0; s >>= 1) {
-    uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
-    d += s * s * ((3 * rx) ^ ry);
-    if (ry == 0) {
-      if (rx == 1) {
-        x = s - 1 - x;
-        y = s - 1 - y;
-      }
-      std::swap(x, y);
-    }
-    x &= s - 1;
-    y &= s - 1;
+  uint32_t d = 0, state = 0;
+  for (int shift = 12; shift >= 0; shift -= 4) {
+    const uint32_t nibbles = (((x >> shift) & 15) << 4) | ((y >> shift) & 15);
+    d = (d << 8) | kHilbertTable.digits[state][nibbles];
+    state = kHilbertTable.state[state][nibbles];
   }
   return d;
 }

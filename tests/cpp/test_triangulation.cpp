@@ -316,6 +316,46 @@ TEST(RefineState, VisitOrderIsEveryLiveVertexOnceAndLocalWhenLarge) {
 // The curve order (curve_order.h) puts every item once, each near the one before, and items at
 // one place in their given order (the Delaunay build keeps the first of equal vertices), both
 // by comparisons (small sets) and by radix passes.
+// The Hilbert index, table-driven, against the curve's definition one level at a time (the
+// rotate-and-flip recursion): every cell of a 256 x 256 corner, the grid's edges, and random
+// cells.
+TEST(CurveOrder, HilbertIndexFollowsTheCurveLevelByLevel) {
+  auto byLevels = [](uint32_t x, uint32_t y) {
+    uint32_t d = 0;
+    for (uint32_t s = 1u << 15; s > 0; s >>= 1) {
+      const uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+      d += s * s * ((3 * rx) ^ ry);
+      if (ry == 0) {
+        if (rx == 1) x = s - 1 - x, y = s - 1 - y;
+        std::swap(x, y);
+      }
+      x &= s - 1, y &= s - 1;
+    }
+    return d;
+  };
+  size_t wrong = 0;
+  for (uint32_t x = 0; x < 256; ++x)
+    for (uint32_t y = 0; y < 256; ++y) wrong += hilbertIndex(x, y) != byLevels(x, y);
+  for (uint32_t k = 0; k < 65536; ++k)
+    wrong += (hilbertIndex(k, 65535) != byLevels(k, 65535)) + (hilbertIndex(65535, k) != byLevels(65535, k));
+  std::mt19937 rng(4);
+  for (int i = 0; i < 1000000; ++i) {
+    const uint32_t x = rng() & 0xFFFF, y = rng() & 0xFFFF;
+    wrong += hilbertIndex(x, y) != byLevels(x, y);
+  }
+  EXPECT_EQ(wrong, 0u);
+  // (A curve: consecutive indices are neighbouring cells.)
+  std::vector<uint32_t> at(256 * 256);
+  for (uint32_t x = 0; x < 256; ++x)
+    for (uint32_t y = 0; y < 256; ++y) at[hilbertIndex(x << 8, y << 8) >> 16] = (x << 8) | y;
+  size_t jumps = 0;
+  for (size_t k = 1; k < at.size(); ++k) {
+    const int dx = int(at[k] >> 8) - int(at[k - 1] >> 8), dy = int(at[k] & 255) - int(at[k - 1] & 255);
+    jumps += std::abs(dx) + std::abs(dy) != 1;
+  }
+  EXPECT_EQ(jumps, 0u);
+}
+
 TEST(CurveOrder, EveryItemOnceLocalAndTiesInOrder) {
   for (size_t n : {size_t(3000), kRadixFrom + 5000}) {
     const std::vector<double> pts = randomPoints(n, 6);
