@@ -759,6 +759,17 @@ Result meshInRange(const Pslg& input, const Options& asked, int exponent, bool b
     stats.warnings.push_back(std::string("optimize has no effect ") + why);
   const bool inParts = refining && byParts &&
                        detail::meshByParts(T, inside, input, inputOf, target, budget, result);
+  if (refining && !inParts && T.vertexCount() == 0) {
+    // The parts released T, then one refused its input (a fault): the domain again, whole.
+    Stats again;
+    Options quiet = options;
+    quiet.progress = nullptr;
+    PhaseClock quietClock(budget, quiet, again);
+    detail::NearEnds ends;
+    ends.snap = nearEnds.snap;
+    step = triangulateDomain(input, options, budget, quietClock, T, inputOf, inside, again, ends);
+    if (!step.ok()) return fail(step.status, step.message);
+  }
   if (inParts) {
     clock.end("refine", "output");
   } else if (refining) {

@@ -15,12 +15,14 @@ namespace acutemesh::detail {
 
 namespace {
 
-// A part: its triangles (slots of T) and, as a problem of its own, its vertices (input vertex
-// i of `pslg` is T's vertex vertices[i], then kFrame more) and the fixed edges around and
-// inside it as segments, each with the input segment it lies on (`origin`, to map the part
-// mesh's Mesh::segmentInput back).
+// A part, as a problem of its own: its vertices (input vertex i of `pslg` is T's vertex
+// vertices[i], then kFrame more) and the fixed edges around and inside it as segments, each
+// with the input segment it lies on (`origin`, to map the part mesh's Mesh::segmentInput back;
+// an edge inside the part goes in both ways, one after the other); and its triangles of T by
+// their corners in that numbering, 3 each (kept should its run stop before it has a mesh).
 struct Part {
-  std::vector<uint32_t> triangles;
+  std::vector<uint32_t> corners;
+  size_t triangleCount() const { return corners.size() / 3; }
   std::vector<uint32_t> vertices;
   Pslg pslg;
   std::vector<uint32_t> origin;
@@ -74,11 +76,14 @@ void addFrame(Pslg& pslg) {
 bool buildParts(const Triangulation& T, const std::vector<uint32_t>& partOf, uint32_t count,
                 std::vector<Part>& parts) {
   parts.assign(count, Part{});
+  std::vector<std::vector<uint32_t>> slots(count);
   for (uint32_t t = 0; t < partOf.size(); ++t)
-    if (partOf[t] != kNone) parts[partOf[t]].triangles.push_back(t);
+    if (partOf[t] != kNone) slots[partOf[t]].push_back(t);
   std::vector<uint32_t> local(T.vertexCount(), kNone), stamp(T.vertexCount(), kNone);
   for (uint32_t p = 0; p < count; ++p) {
     Part& part = parts[p];
+    std::vector<uint32_t> triangles;
+    triangles.swap(slots[p]);
     auto at = [&](uint32_t v) {
       if (stamp[v] != p) {
         stamp[v] = p, local[v] = uint32_t(part.vertices.size());
@@ -87,7 +92,7 @@ bool buildParts(const Triangulation& T, const std::vector<uint32_t>& partOf, uin
       }
       return local[v];
     };
-    for (uint32_t t : part.triangles)
+    for (uint32_t t : triangles)
       for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
         const bool boundary = partOf[T.opp[e] / 3] != p;
         if (!T.fixed[e]) {
@@ -105,8 +110,9 @@ bool buildParts(const Triangulation& T, const std::vector<uint32_t>& partOf, uin
           part.origin.push_back(input);
         }
       }
-    for (uint32_t t : part.triangles)  // (every corner, should one touch no fixed edge)
-      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) at(T.tri[e]);
+    part.corners.reserve(3 * triangles.size());
+    for (uint32_t t : triangles)  // (every corner, should one touch no fixed edge)
+      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) part.corners.push_back(at(T.tri[e]));
     addFrame(part.pslg);
   }
   return true;
@@ -119,10 +125,10 @@ class PartProgress {
   explicit PartProgress(const std::vector<Part>& parts)
       : done_(new std::atomic<double>[parts.size()]), weight_(parts.size()) {
     double total = 0;
-    for (const Part& part : parts) total += double(part.triangles.size());
+    for (const Part& part : parts) total += double(part.triangleCount());
     for (size_t p = 0; p < parts.size(); ++p) {
       done_[p] = 0;
-      weight_[p] = double(parts[p].triangles.size()) / total;
+      weight_[p] = double(parts[p].triangleCount()) / total;
     }
   }
   // The round of runs now going on spans [from, to] of each part's fraction.
@@ -183,7 +189,7 @@ void runRound(std::vector<Part>& parts, const Options& target, const Budget& bud
   std::vector<size_t> order(parts.size());
   for (size_t p = 0; p < parts.size(); ++p) order[p] = p;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return parts[a].triangles.size() > parts[b].triangles.size();
+    return parts[a].triangleCount() > parts[b].triangleCount();
   });
   std::vector<double> weightFrom(order.size() + 1, 0);  // the weight of order[k..]
   for (size_t k = order.size(); k-- > 0;) weightFrom[k] = weightFrom[k + 1] + progress.share(order[k]);
@@ -282,7 +288,7 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
 
 }  // namespace
 
-bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, const Pslg& input,
+bool meshByParts(Triangulation& T, const std::vector<uint8_t>& inside, const Pslg& input,
                  const std::vector<uint32_t>& inputOf, const Options& target,
                  const Budget& budget, Result& result) {
   if ((target.mode != Mode::Acute && target.mode != Mode::NonObtuse) || target.exactFeet ||
@@ -296,6 +302,12 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
     return false;
   std::vector<Part> parts;
   if (!buildParts(T, partOf, count, parts)) return false;
+  // The whole's store goes while the parts run (the United States: 190 MB): each part holds
+  // its problem and its triangles, the assembly needs only the store's crossing points.
+  const uint32_t storeVertices = T.vertexCount(), inputStored = uint32_t(inputOf.size());
+  const std::vector<double> crossingPoints(T.pts.begin() + 2 * size_t(inputStored), T.pts.end());
+  T = Triangulation{};
+  std::vector<uint32_t>().swap(partOf);
 #ifdef ACUTEMESH_THREADS
   const unsigned threads = threadsFor(target);
 #else
@@ -319,12 +331,13 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
   const uint32_t inputCount = uint32_t(input.vertexCount());
   mesh.points = input.points;
   mesh.vertexKind.assign(inputCount, kUnusedVertex);
-  std::vector<uint32_t> index(T.vertexCount(), kNone);
+  std::vector<uint32_t> index(storeVertices, kNone);
   std::copy(inputOf.begin(), inputOf.end(), index.begin());
   auto output = [&](uint32_t v) {  // T's vertex v in the mesh
     if (index[v] == kNone) {
       index[v] = uint32_t(mesh.vertexKind.size());
-      mesh.points.insert(mesh.points.end(), {T.point(v)[0], T.point(v)[1]});
+      const double* p = &crossingPoints[2 * size_t(v - inputStored)];
+      mesh.points.insert(mesh.points.end(), {p[0], p[1]});
       mesh.vertexKind.push_back(kSegmentVertex);  // (a crossing point)
     } else if (v < inputOf.size()) {
       mesh.vertexKind[index[v]] = kInputVertex;
@@ -333,8 +346,7 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
   };
   bool missed = false, cancelled = false, partCut = false;
   // The whole's twins from the parts' (each part's run leaves its store's in
-  // Mesh::adjacency.halfedges; no edge joins two parts). A part still in T's triangles has
-  // none: the output labels then find them.
+  // Mesh::adjacency.halfedges; no edge joins two parts).
   std::vector<int32_t>& twin = mesh.adjacency.halfedges;
   bool twinsKnown = true;
   for (uint32_t p = 0; p < count; ++p) {
@@ -348,15 +360,17 @@ bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, con
       const int32_t offset = int32_t(mesh.triangles.size());
       for (int32_t t : m.adjacency.halfedges) twin.push_back(t < 0 ? -1 : t + offset);
     }
-    if (m.triangles.empty()) {
-      for (uint32_t t : part.triangles)
-        for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
-          mesh.triangles.push_back(output(T.tri[e]));
-          if (T.fixed[e] && (partOf[T.opp[e] / 3] != p || e < T.opp[e])) {
-            mesh.segments.insert(mesh.segments.end(), {output(T.tri[e]), output(T.tri[next(e)])});
-            mesh.segmentInput.push_back(T.segment.empty() ? 0 : T.segment[e]);
-          }
-        }
+    if (m.triangles.empty()) {  // (its triangles of T; the output labels find the twins)
+      std::vector<uint32_t> to(part.vertices.size());
+      for (uint32_t i = 0; i < to.size(); ++i) to[i] = output(part.vertices[i]);
+      for (uint32_t v : part.corners) mesh.triangles.push_back(to[v]);
+      const std::vector<uint32_t>& ends = part.pslg.segments;
+      for (size_t i = 0; i < part.origin.size(); ++i) {
+        if (i > 0 && ends[2 * i] == ends[2 * i - 1] && ends[2 * i + 1] == ends[2 * i - 2])
+          continue;  // (an edge inside the part, its second way)
+        mesh.segments.insert(mesh.segments.end(), {to[ends[2 * i]], to[ends[2 * i + 1]]});
+        mesh.segmentInput.push_back(part.origin[i]);
+      }
       continue;
     }
     std::vector<uint32_t> to(m.vertexCount());

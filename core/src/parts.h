@@ -22,11 +22,12 @@ Result meshInRange(const Pslg& input, const Options& options, int exponent, bool
 // inputOf[k]) part by part toward `target` (acute or non-obtuse) into result.mesh, with
 // result.status and message Cancelled when a part's run was (saying whether every part met the
 // target), TargetNotMet when one missed it as the time limit ran out (other misses are the
-// caller's certificate's). False,
-// touching nothing, when the domain does not go by parts: one part, too small (kPartsFrom),
-// a part bounded where no segment lies (a kept hull), options a part cannot share (a Steiner
-// cap, exact feet), or a part's run refusing its input (then the caller meshes it whole).
-bool meshByParts(const Triangulation& T, const std::vector<uint8_t>& inside, const Pslg& input,
+// caller's certificate's). False, touching nothing, when the domain does not go by parts:
+// one part, too small (kPartsFrom), a part bounded where no segment lies (a kept hull),
+// options a part cannot share (a Steiner cap, exact feet). Once the parts run, T is released
+// (emptied); false after that means a part's run refused its input (a fault): the caller
+// triangulates the domain again and meshes it whole.
+bool meshByParts(Triangulation& T, const std::vector<uint8_t>& inside, const Pslg& input,
                  const std::vector<uint32_t>& inputOf, const Options& target,
                  const Budget& budget, Result& result);
 
