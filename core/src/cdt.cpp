@@ -8,7 +8,8 @@
 // pass through that vertex), and otherwise the triangles it crosses give way to
 // the constrained Delaunay triangulations of its two sides (Triangulation::
 // insertEdgeThroughCavity), or, where a side is not a simple chain, the crossed edges are
-// flipped away (Sloan's method) and Delaunay is restored with Lawson flips.
+// flipped away (Sloan's method) and Delaunay is restored with Lawson flips. Long chained
+// segments may instead go in one pass with their ends (triangulateAlongSegments, build.h).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -448,13 +449,18 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
 // the warnings for zero-length segments and crossings.
 template <class Before>
 StepResult insertInOrder(SegmentInserter& inserter, const Pslg& input,
-                         const std::vector<uint32_t>& canonical, Stats& stats, Before before) {
+                         const std::vector<uint32_t>& canonical, Stats& stats,
+                         const Budget& budget, Before before) {
   size_t n = input.segmentCount();
   // Rounded crossing points can create a few more crossings; a budget far above any real
   // input's crossing count turns a pathological cascade into an error instead of a hang.
   uint64_t crossingBudget = 64ull * n * n + 4096;
   uint32_t zeroLength = 0;
   for (size_t s = 0; s < n; ++s) {
+    // (Not before the 4,096th: a small input's CDT is always made, for a stopped run to return.)
+    if (s > 0 && (s & 0xFFF) == 0 && budget.stop())
+      return {budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
+              "stopped while inserting the segments"};
     StepResult r = before(s);
     if (!r.ok()) return r;
     uint32_t a = canonical[input.segments[2 * s]], b = canonical[input.segments[2 * s + 1]];
@@ -485,7 +491,8 @@ StepResult insertSegments(Triangulation& T, const Pslg& input,
   nearEnds.found.clear();
   nearEnds.close.clear();
   SegmentInserter inserter(T, input, canonical, budget, nearEnds);
-  return insertInOrder(inserter, input, canonical, stats, [](size_t) { return StepResult{}; });
+  return insertInOrder(inserter, input, canonical, stats, budget,
+                       [](size_t) { return StepResult{}; });
 }
 
 bool alongSegmentsPays(const Pslg& input) {
@@ -585,7 +592,7 @@ StepResult triangulateAlongSegments(Triangulation& T, const Pslg& input,
     }
     return {};
   };
-  StepResult step = insertInOrder(inserter, input, canonical, stats, [&](size_t s) {
+  StepResult step = insertInOrder(inserter, input, canonical, stats, budget, [&](size_t s) {
     return insertUpTo(std::max(canonical[input.segments[2 * s]],
                                canonical[input.segments[2 * s + 1]]));
   });

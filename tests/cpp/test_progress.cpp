@@ -2,6 +2,7 @@
 // from. Timings are asserted loosely (a loaded 2-core machine stretches every gap).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -225,5 +226,36 @@ TEST(Progress, LargeCoastlineMovesSteadilyAndCancels) {
     Options plain = o;
     plain.mode = Mode::Cdt;  // (a cancelled mesh meets no angle target: check it as a CDT's)
     EXPECT_EQ(fixtures::validationErrors(in, plain, cut.mesh), "") << nameOf(mode);
+  }
+}
+
+// A cancel asked for as the Delaunay phase ends stops the segments' insertion, not the phase
+// after it (the United States' segments take 0.2 s), in both ways of inserting them: after
+// the Delaunay triangulation (a coastline) and along with their ends (a large star polygon).
+TEST(Progress, CancelLandsInTheSegmentsPhase) {
+  Pslg star;
+  const int n = 20000;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> angles(n);
+  for (double& a : angles) a = 2 * M_PI * u(rng);
+  std::sort(angles.begin(), angles.end());
+  for (int i = 0; i < n; ++i) {
+    const double r = 0.5 + 0.5 * u(rng);
+    star.points.insert(star.points.end(), {r * std::cos(angles[i]), r * std::sin(angles[i])});
+    star.segments.insert(star.segments.end(), {uint32_t(i), uint32_t((i + 1) % n)});
+  }
+  for (const Pslg& in : {coastline(), star}) {
+    std::atomic<bool> cancel{false};
+    Options o;
+    o.mode = Mode::Acute;
+    o.fill = FillRule::EvenOdd;
+    o.cancel = &cancel;
+    o.progress = [&](const Progress& p) {
+      if (std::string(p.phase) == "delaunay" && p.fraction == 1) cancel = true;
+    };
+    const Result r = mesh(in, o);
+    EXPECT_EQ(r.status, Status::Cancelled) << r.message;
+    EXPECT_EQ(r.message, "stopped while inserting the segments");
   }
 }

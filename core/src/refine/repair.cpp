@@ -178,8 +178,10 @@ StepResult Repair::repairAll() {
     if (c.k >= 0) queue.push({byGain ? repairGain(t, c) : 0, key(t), t});
   };
   const auto stopped = [&]() -> StepResult {
-    return {job_.budget.cancelled() ? Status::Cancelled : Status::TargetNotMet,
-            "time limit reached before every triangle met the target"};
+    const bool cancelled = job_.budget.cancelled();
+    return {cancelled ? Status::Cancelled : Status::TargetNotMet,
+            std::string(cancelled ? "cancelled" : "time limit reached") +
+                " before every triangle met the target"};
   };
   // Progress: the first queue's share (weighing every bad triangle's repair takes a while),
   // then the share of the entries popped among those popped and still queued.
