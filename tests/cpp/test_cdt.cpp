@@ -112,9 +112,11 @@ size_t invertedTriangles(const Triangulation& T) {
 }
 
 // Searches a path of fixed edges from a to b on which every step moves strictly closer to b
-// along a->b. Vertices on it must lie exactly on the segment unless they are crossing points
-// added by insertion (index >= inputCount), which are rounded.
-bool isFixedChain(const Triangulation& T, uint32_t a, uint32_t b, uint32_t inputCount) {
+// along a->b. Vertices on it must lie exactly on the segment (withinReach: within rounding
+// reach of it, what validate() grants a chain) unless they are crossing points added by
+// insertion (index >= inputCount), which are rounded.
+bool isFixedChain(const Triangulation& T, uint32_t a, uint32_t b, uint32_t inputCount,
+                  bool withinReach = false) {
   std::vector<uint32_t> stack{a};
   std::vector<uint8_t> seen(T.vertexCount(), 0);
   while (!stack.empty()) {
@@ -126,7 +128,9 @@ bool isFixedChain(const Triangulation& T, uint32_t a, uint32_t b, uint32_t input
     uint32_t e0 = T.vertexEdge[at], e = e0;
     do {
       uint32_t w = T.tri[next(e)];
-      bool onLine = w == b || w >= inputCount || orient2d(T.point(a), T.point(b), T.point(w)) == 0;
+      bool onLine = w == b || w >= inputCount ||
+                    (withinReach ? nearLine(T.point(a), T.point(b), T.point(w))
+                                 : orient2d(T.point(a), T.point(b), T.point(w)) == 0);
       if (T.fixed[e] && w != kGhost && onLine &&
           (w == b || (dot2d(T.point(w), T.point(at), T.point(b)) < 0 &&
                       dot2d(T.point(at), T.point(w), T.point(b)) > 0)))
@@ -340,32 +344,6 @@ TEST(Cdt, SegmentEndNearASegmentSnappedOnlyWhenAsked) {
 
 namespace {
 
-// Whether a path of fixed edges runs from a to b, each step strictly closer to b along a->b,
-// through crossing points (index >= inputCount) and vertices within rounding reach of the
-// segment (what validate() grants a chain).
-bool isFixedChainWithinReach(const Triangulation& T, uint32_t a, uint32_t b, uint32_t inputCount) {
-  std::vector<uint32_t> stack{a};
-  std::vector<uint8_t> seen(T.vertexCount(), 0);
-  while (!stack.empty()) {
-    const uint32_t at = stack.back();
-    stack.pop_back();
-    if (at == b) return true;
-    if (seen[at]) continue;
-    seen[at] = 1;
-    uint32_t e0 = T.vertexEdge[at], e = e0;
-    do {
-      const uint32_t w = T.tri[next(e)];
-      if (T.fixed[e] && w != kGhost &&
-          (w == b || ((w >= inputCount || nearLine(T.point(a), T.point(b), T.point(w))) &&
-                      dot2d(T.point(w), T.point(at), T.point(b)) < 0 &&
-                      dot2d(T.point(at), T.point(w), T.point(b)) > 0)))
-        stack.push_back(w);
-      e = T.opp[prev(e)];
-    } while (e != e0);
-  }
-  return false;
-}
-
 // Along the segments or in two steps, the same constrained Delaunay triangulation: the same
 // fixed edges, as many triangles (cocircular vertices may tie differently), the same vertices
 // found near segments; where `sameRoutes` is false, a valid one whose segments may take other
@@ -381,8 +359,8 @@ bool expectSameCdtAlong(const Pslg& in, bool snap = false, bool sameRoutes = tru
   for (size_t s = 0; s < in.segmentCount(); ++s) {  // (where the two steps' is: fuzz findings')
     const uint32_t *ends = &in.segments[2 * s], count = uint32_t(in.vertexCount());
     const uint32_t a = along.canonical[ends[0]], b = along.canonical[ends[1]];
-    if (a != b && isFixedChainWithinReach(twoSteps.T, twoSteps.canonical[ends[0]], twoSteps.canonical[ends[1]], count)) {
-      EXPECT_TRUE(isFixedChainWithinReach(along.T, a, b, count)) << "segment " << s;
+    if (a != b && isFixedChain(twoSteps.T, twoSteps.canonical[ends[0]], twoSteps.canonical[ends[1]], count, true)) {
+      EXPECT_TRUE(isFixedChain(along.T, a, b, count, true)) << "segment " << s;
     }
   }
   EXPECT_EQ(realTriangles(along.T), realTriangles(twoSteps.T));
