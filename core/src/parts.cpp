@@ -180,9 +180,10 @@ enum class Round { Only, Acute, Descents };
 
 // Runs every part's problem toward `target` on `threads` threads (the calling one alone for
 // 1), the largest first so that the last to end are small; reports the whole's fraction from
-// the calling thread, which alone may call Options::progress. In the descents' round each
-// part's run may use its share (by weight) of the time left to the parts not yet started, no
-// part starts once the budget is spent, and a part's acute mesh goes once its own run has one.
+// the calling thread, which alone may call Options::progress. No part starts once the time
+// limit is reached (in the descents' round, nor once cancelled). In the descents' round each
+// part's run may use its share (by weight) of the time left to the parts not yet started, and
+// a part's acute mesh goes once its own run has one.
 void runRound(std::vector<Part>& parts, const Options& target, const Budget& budget,
               unsigned threads, PartProgress& progress, Round round) {
   const bool shareTime = round == Round::Descents;
@@ -203,7 +204,9 @@ void runRound(std::vector<Part>& parts, const Options& target, const Budget& bud
   auto work = [&](bool reporting) {
     for (size_t k; (k = next++) < order.size();) {
       const size_t p = order[k];
-      if (shareTime && budget.stop()) {
+      // (Each would make its CDT before it heard that the time is up; a cancel is heard at a
+      // run's first poll.)
+      if (shareTime ? budget.stop() : budget.outOfTime()) {
         progress.finish(p);
         continue;
       }
@@ -228,7 +231,9 @@ void runRound(std::vector<Part>& parts, const Options& target, const Budget& bud
       runPart(parts[p], options);
       parts[p].outOfTime = options.timeLimit > 0 && parts[p].result.status != Status::Ok &&
                            parts[p].result.stats.seconds >= options.timeLimit;
-      if (round != Round::Acute) parts[p].pslg = Pslg{};  // (no longer needed)
+      // (No longer needed, unless the run stopped before it had a mesh: the assembly takes the
+      // part's triangles of T then, with its segments from here.)
+      if (round != Round::Acute && !parts[p].result.mesh.triangles.empty()) parts[p].pslg = Pslg{};
       if (shareTime && isAcute(parts[p].result)) parts[p].acute = Result{};
       progress.finish(p);
       if (reporting) report();

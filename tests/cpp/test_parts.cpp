@@ -153,6 +153,32 @@ TEST(Parts, CancelledRunStillCoversEveryPart) {
   EXPECT_NEAR(area(cut.mesh), domain, 1e-12 * domain) << "a part is missing";
 }
 
+// A cancel that comes as the parts start: every part's run starts cancelled, and one of more
+// than 4,096 segments stops in its segments' insertion, before it has a mesh; the assembly
+// takes its triangles of the whole's CDT (its run's input gone by then, this crashed).
+TEST(Parts, CancelledBeforeAPartHasAMeshStillCoversIt) {
+  Pslg in = archipelago();
+  std::mt19937_64 rng(9);
+  addRing(in, coastline(rng, 21.5, 69.5, 0.4, 8, 10));  // 8,192 vertices
+  Options o;
+  o.mode = Mode::Acute;
+  o.fill = FillRule::EvenOdd;
+  std::atomic<bool> cancel{false};
+  o.cancel = &cancel;
+  o.progress = [&](const Progress& p) {
+    if (std::strcmp(p.phase, "domain") == 0 && p.fraction == 1) cancel = true;
+  };
+  const Result cut = mesh(in, o);
+  ASSERT_EQ(cut.status, Status::Cancelled) << cut.message;
+  EXPECT_EQ(cut.message, "cancelled before every part met the target");
+  Options plain = o;
+  plain.mode = Mode::Cdt;
+  plain.progress = nullptr;
+  EXPECT_EQ(fixtures::validationErrors(in, plain, cut.mesh), "");
+  const double domain = area(mesh(in, evenOddCdt()).mesh);
+  EXPECT_NEAR(area(cut.mesh), domain, 1e-12 * domain) << "a part is missing";
+}
+
 // Options::optimize runs part by part: each part's search has its share of the seconds, so the
 // run takes about those seconds longer, with fewer points than without it, covered and
 // certified; with tries instead of seconds the mesh is the same on one thread as on two while
