@@ -100,8 +100,8 @@ bool alongSegmentsPays(const Pslg& input);
 // first name them, then the rest along the curve. Sets `declined` (T then holds no result)
 // where the input needs the general way: a vertex lies within rounding reach of a segment
 // inserted before it (insertSegments would run the segment through it, or list it in
-// nearEnds) or at a crossing point made before it, a segment crosses one on the hull so far, every segment end lies on one line, or
-// anything else fails.
+// nearEnds) or at a crossing point made before it, a segment crosses one on the hull so far, every
+// segment end lies on one line, or anything else fails.
 StepResult triangulateAlongSegments(Triangulation& T, const Pslg& input,
                                     std::vector<uint32_t>& canonical,
                                     std::vector<uint32_t>& inputOf, Stats& stats,

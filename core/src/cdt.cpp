@@ -449,8 +449,8 @@ StepResult SegmentInserter::insert(uint32_t seg, uint64_t crossingBudget) {
 // the warnings for zero-length segments and crossings.
 template <class Before>
 StepResult insertInOrder(SegmentInserter& inserter, const Pslg& input,
-                         const std::vector<uint32_t>& canonical, Stats& stats,
-                         const Budget& budget, Before before) {
+                         const std::vector<uint32_t>& canonical, Stats& stats, const Budget& budget,
+                         Before before) {
   size_t n = input.segmentCount();
   // Rounded crossing points can create a few more crossings; a budget far above any real
   // input's crossing count turns a pathological cascade into an error instead of a hang.
@@ -506,8 +506,10 @@ bool alongSegmentsPays(const Pslg& input) {
     const double *p = &input.points[2 * size_t(a[0])], *q = &input.points[2 * size_t(a[1])];
     length += std::hypot(q[0] - p[0], q[1] - p[1]);
   }
-  for (size_t i = 0; i < 2 * count; ++i)
-    lo[i % 2] = std::min(lo[i % 2], input.points[i]), hi[i % 2] = std::max(hi[i % 2], input.points[i]);
+  for (size_t i = 0; i < 2 * count; ++i) {
+    lo[i % 2] = std::min(lo[i % 2], input.points[i]);
+    hi[i % 2] = std::max(hi[i % 2], input.points[i]);
+  }
   const double spacing = std::sqrt((hi[0] - lo[0]) * (hi[1] - lo[1]) / double(count));
   return chained >= n - n / 8 && length / double(n) >= spacing;
 }
@@ -584,7 +586,8 @@ StepResult triangulateAlongSegments(Triangulation& T, const Pslg& input,
         // (At a crossing point made before it: two steps would have made that crossing there.)
         if (r >= count || (r == k && inserter.nearFixedEdge(k))) {
           declined = true;
-          return {Status::BadInput, "a vertex at or beside a segment (declined along the segments)"};
+          return {Status::BadInput,
+                  "a vertex at or beside a segment (declined along the segments)"};
         }
       }
       canonical[inputOf[k]] = r;
@@ -593,8 +596,8 @@ StepResult triangulateAlongSegments(Triangulation& T, const Pslg& input,
     return {};
   };
   StepResult step = insertInOrder(inserter, input, canonical, stats, budget, [&](size_t s) {
-    return insertUpTo(std::max(canonical[input.segments[2 * s]],
-                               canonical[input.segments[2 * s + 1]]));
+    return insertUpTo(
+        std::max(canonical[input.segments[2 * s]], canonical[input.segments[2 * s + 1]]));
   });
   if (step.ok()) step = insertUpTo(count - 1);
   T.hullFollowsSegments = true;

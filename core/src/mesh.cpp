@@ -608,8 +608,8 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   if (constrained && detail::alongSegmentsPays(input)) {
     // One pass, timed as the segments' phase (the Delaunay phase is then empty).
     clock.end("delaunay", "segments");
-    step = detail::triangulateAlongSegments(T, input, canonical, inputOf, stats, budget,
-                                            nearEnds, declined);
+    step = detail::triangulateAlongSegments(T, input, canonical, inputOf, stats, budget, nearEnds,
+                                            declined);
     if (declined) {
       stats.warnings.resize(warningsBefore);
       T = Triangulation{};
@@ -624,7 +624,8 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
     step = detail::buildDelaunay(T, input.points, canonical, inputOf, budget);
     if (!step.ok()) return step;
     countDuplicates();
-    if (stats.phases.size() == phasesBefore) clock.end("delaunay", constrained ? "segments" : "domain");
+    if (stats.phases.size() == phasesBefore)
+      clock.end("delaunay", constrained ? "segments" : "domain");
     if (constrained) step = detail::insertSegments(T, input, canonical, stats, budget, nearEnds);
     if (!step.ok()) return step;
   }

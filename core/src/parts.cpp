@@ -294,8 +294,8 @@ void runParts(std::vector<Part>& parts, const Options& target, const Budget& bud
 }  // namespace
 
 bool meshByParts(Triangulation& T, const std::vector<uint8_t>& inside, const Pslg& input,
-                 const std::vector<uint32_t>& inputOf, const Options& target,
-                 const Budget& budget, Result& result) {
+                 const std::vector<uint32_t>& inputOf, const Options& target, const Budget& budget,
+                 Result& result) {
   if ((target.mode != Mode::Acute && target.mode != Mode::NonObtuse) || target.exactFeet ||
       target.maxSteiner)
     return false;

@@ -62,7 +62,8 @@ std::vector<std::array<double, 4>> fixedEdges(const Triangulation& T) {
   for (uint32_t e = 0; e < 3 * T.triangleSlots(); ++e) {
     if (T.isFree(e / 3) || !T.fixed[e] || T.tri[e] == kGhost || T.tri[next(e)] == kGhost) continue;
     const double *p = T.point(T.tri[e]), *q = T.point(T.tri[next(e)]);
-    if (std::make_pair(p[0], p[1]) < std::make_pair(q[0], q[1])) edges.push_back({p[0], p[1], q[0], q[1]});
+    if (std::make_pair(p[0], p[1]) < std::make_pair(q[0], q[1]))
+      edges.push_back({p[0], p[1], q[0], q[1]});
   }
   std::sort(edges.begin(), edges.end());
   return edges;
@@ -353,13 +354,15 @@ bool expectSameCdtAlong(const Pslg& in, bool snap = false, bool sameRoutes = tru
   const Built along = buildAlong(in, declined, snap);
   if (declined) return false;
   const Built twoSteps = buildCdt(in, snap);
-  EXPECT_EQ(along.result.ok(), twoSteps.result.ok()) << along.result.message << " / " << twoSteps.result.message;
+  EXPECT_EQ(along.result.ok(), twoSteps.result.ok())
+      << along.result.message << " / " << twoSteps.result.message;
   if (!along.result.ok() || !twoSteps.result.ok()) return true;
   EXPECT_EQ(brokenLinks(along.T) + invertedTriangles(along.T) + nonDelaunayEdges(along.T), 0u);
   for (size_t s = 0; s < in.segmentCount(); ++s) {  // (where the two steps' is: fuzz findings')
     const uint32_t *ends = &in.segments[2 * s], count = uint32_t(in.vertexCount());
     const uint32_t a = along.canonical[ends[0]], b = along.canonical[ends[1]];
-    if (a != b && isFixedChain(twoSteps.T, twoSteps.canonical[ends[0]], twoSteps.canonical[ends[1]], count, true)) {
+    if (a != b && isFixedChain(twoSteps.T, twoSteps.canonical[ends[0]], twoSteps.canonical[ends[1]],
+                               count, true)) {
       EXPECT_TRUE(isFixedChain(along.T, a, b, count, true)) << "segment " << s;
     }
   }
@@ -370,7 +373,8 @@ bool expectSameCdtAlong(const Pslg& in, bool snap = false, bool sameRoutes = tru
     const uint32_t a = along.canonical[ends[0]], b = along.canonical[ends[1]];
     const uint32_t c = twoSteps.canonical[ends[0]], d = twoSteps.canonical[ends[1]];
     if (a != b || c != d) {
-      EXPECT_EQ(isFixedChain(along.T, a, b, count), isFixedChain(twoSteps.T, c, d, count)) << "segment " << s;
+      EXPECT_EQ(isFixedChain(along.T, a, b, count), isFixedChain(twoSteps.T, c, d, count))
+          << "segment " << s;
     }
   }
   EXPECT_TRUE(fixedEdges(along.T) == fixedEdges(twoSteps.T));
@@ -409,7 +413,8 @@ TEST(Cdt, AlongTheSegmentsTheSameCdtAsInTwoSteps) {
       const size_t i = 2 + rng() % 1990;
       switch (kind) {
         case 0:
-          std::swap(in.points[2 * i], in.points[2 * i + 2]), std::swap(in.points[2 * i + 1], in.points[2 * i + 3]);
+          std::swap(in.points[2 * i], in.points[2 * i + 2]);
+          std::swap(in.points[2 * i + 1], in.points[2 * i + 3]);
           break;
         case 1:
           in.points[2 * i] = in.points[2 * i - 4], in.points[2 * i + 1] = in.points[2 * i - 3];
@@ -447,8 +452,9 @@ TEST(Cdt, AlongTheSegmentsTheSameCdtAsInTwoSteps) {
   EXPECT_GE(taken, 12);  // (the rest cross a segment on the hull so far, or the like)
 
   int files = 0;
-  for (const std::string& dir : {std::string(ACUTEMESH_TEST_DATA), std::string(ACUTEMESH_TEST_DATA) + "/bad",
-                                std::string(ACUTEMESH_SOURCE_DIR) + "/tests/fuzz/findings"}) {
+  for (const std::string& dir :
+       {std::string(ACUTEMESH_TEST_DATA), std::string(ACUTEMESH_TEST_DATA) + "/bad",
+        std::string(ACUTEMESH_SOURCE_DIR) + "/tests/fuzz/findings"}) {
     DIR* d = opendir(dir.c_str());
     ASSERT_NE(d, nullptr) << dir;
     std::vector<std::string> names;
@@ -488,8 +494,9 @@ TEST(Cdt, AlongTheSegmentsTheSameCdtAsInTwoSteps) {
 // inserted before it (here in the first triangle), the segment's walk finds it as theirs does.
 TEST(Cdt, AlongTheSegmentsDeclinesAnEndBesideAnEarlierSegment) {
   Pslg in;
-  in.points = {304.044414507, 52.7809173497, 304.047111935, 52.7796528742, 304.045763221,
-               52.7802851121, 304.047111935, 52.7802851119, 304.04846065, 52.779, 304.044, 52.779};
+  in.points = {304.044414507, 52.7809173497, 304.047111935, 52.7796528742,
+               304.045763221, 52.7802851121, 304.047111935, 52.7802851119,
+               304.04846065,  52.779,        304.044,       52.779};
   in.segments = {5, 0, 0, 1, 1, 2, 2, 3, 3, 1, 1, 4, 4, 5};
   bool declined = false;
   buildAlong(in, declined, true);

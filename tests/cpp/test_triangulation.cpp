@@ -337,7 +337,8 @@ TEST(CurveOrder, HilbertIndexFollowsTheCurveLevelByLevel) {
   for (uint32_t x = 0; x < 256; ++x)
     for (uint32_t y = 0; y < 256; ++y) wrong += hilbertIndex(x, y) != byLevels(x, y);
   for (uint32_t k = 0; k < 65536; ++k)
-    wrong += (hilbertIndex(k, 65535) != byLevels(k, 65535)) + (hilbertIndex(65535, k) != byLevels(65535, k));
+    wrong += (hilbertIndex(k, 65535) != byLevels(k, 65535)) +
+             (hilbertIndex(65535, k) != byLevels(65535, k));
   std::mt19937 rng(4);
   for (int i = 0; i < 1000000; ++i) {
     const uint32_t x = rng() & 0xFFFF, y = rng() & 0xFFFF;
@@ -350,7 +351,8 @@ TEST(CurveOrder, HilbertIndexFollowsTheCurveLevelByLevel) {
     for (uint32_t y = 0; y < 256; ++y) at[hilbertIndex(x << 8, y << 8) >> 16] = (x << 8) | y;
   size_t jumps = 0;
   for (size_t k = 1; k < at.size(); ++k) {
-    const int dx = int(at[k] >> 8) - int(at[k - 1] >> 8), dy = int(at[k] & 255) - int(at[k - 1] & 255);
+    const int dx = int(at[k] >> 8) - int(at[k - 1] >> 8),
+              dy = int(at[k] & 255) - int(at[k - 1] & 255);
     jumps += std::abs(dx) + std::abs(dy) != 1;
   }
   EXPECT_EQ(jumps, 0u);
