@@ -58,6 +58,14 @@ StepResult buildDelaunay(Triangulation& T, const std::vector<double>& points,
                          std::vector<uint32_t>& canonical, std::vector<uint32_t>& inputOf,
                          const Budget& budget);
 
+// buildDelaunay's steps, shared with triangulateAlongSegments: T's vertices k = 0, 1, ... at
+// points[inputOf[k]], none connected yet; and the first triangle among T's vertices below
+// `end`: vertex 0, the next distinct one (b), the next not on a line with both (c), kNone
+// where there is none.
+void placeVertices(Triangulation& T, const std::vector<double>& points,
+                   const std::vector<uint32_t>& inputOf);
+void firstTriangle(const Triangulation& T, uint32_t end, uint32_t& b, uint32_t& c);
+
 // Segment ends within rounding reach of another segment, strictly inside it: mostly the tips
 // of spikes and slivers thinner than the reach (digitising artefacts), which no refinement
 // resolves. insertSegments lists them in `found` (vertex in T, the input segment it lies on)

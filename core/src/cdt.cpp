@@ -545,21 +545,10 @@ StepResult triangulateAlongSegments(Triangulation& T, const Pslg& input,
     inputOf.push_back(i);
   }
   std::vector<uint32_t>().swap(rest);
-  T.pts.resize(2 * size_t(count));
-  T.vertexEdge.assign(count, kNone);
-  for (uint32_t k = 0; k < count; ++k) {
-    T.pts[2 * size_t(k)] = input.points[2 * size_t(inputOf[k])];
-    T.pts[2 * size_t(k) + 1] = input.points[2 * size_t(inputOf[k]) + 1];
-  }
+  placeVertices(T, input.points, inputOf);
   // The first triangle, from segment ends (all of them on a line: the general way).
-  uint32_t b = kNone, c = kNone;
-  auto same = [&](uint32_t j, uint32_t k) {
-    return T.point(j)[0] == T.point(k)[0] && T.point(j)[1] == T.point(k)[1];
-  };
-  for (uint32_t k = 1; k < ends && b == kNone; ++k)
-    if (!same(k, 0)) b = k;
-  for (uint32_t k = b == kNone ? ends : b + 1; k < ends && c == kNone; ++k)
-    if (orient2d(T.point(0), T.point(b), T.point(k)) != 0) c = k;
+  uint32_t b, c;
+  firstTriangle(T, ends, b, c);
   if (c == kNone) {
     declined = true;
     return {};

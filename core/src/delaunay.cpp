@@ -12,6 +12,25 @@ bool samePoint(const double* a, const double* b) { return a[0] == b[0] && a[1] =
 
 }  // namespace
 
+void placeVertices(Triangulation& T, const std::vector<double>& points,
+                   const std::vector<uint32_t>& inputOf) {
+  const size_t count = inputOf.size();
+  T.pts.resize(2 * count);
+  T.vertexEdge.assign(count, kNone);
+  for (size_t k = 0; k < count; ++k) {
+    T.pts[2 * k] = points[2 * size_t(inputOf[k])];
+    T.pts[2 * k + 1] = points[2 * size_t(inputOf[k]) + 1];
+  }
+}
+
+void firstTriangle(const Triangulation& T, uint32_t end, uint32_t& b, uint32_t& c) {
+  b = c = kNone;
+  for (uint32_t k = 1; k < end && b == kNone; ++k)
+    if (!samePoint(T.point(k), T.point(0))) b = k;
+  for (uint32_t k = b == kNone ? end : b + 1; k < end && c == kNone; ++k)
+    if (orient2d(T.point(0), T.point(b), T.point(k)) != 0) c = k;
+}
+
 StepResult buildDelaunay(Triangulation& T, const std::vector<double>& points,
                          std::vector<uint32_t>& canonical, std::vector<uint32_t>& inputOf,
                          const Budget& budget) {
@@ -27,23 +46,14 @@ StepResult buildDelaunay(Triangulation& T, const std::vector<double>& points,
   sortAlongCurve(inputOf, [&](uint32_t i, double* p) {
     p[0] = points[2 * size_t(i)], p[1] = points[2 * size_t(i) + 1];
   });
-  T.pts.resize(2 * size_t(count));
-  T.vertexEdge.assign(count, kNone);
+  placeVertices(T, points, inputOf);
   canonical.resize(count);
-  for (uint32_t k = 0; k < count; ++k) {
-    T.pts[2 * size_t(k)] = points[2 * size_t(inputOf[k])];
-    T.pts[2 * size_t(k) + 1] = points[2 * size_t(inputOf[k]) + 1];
-    canonical[inputOf[k]] = k;
-  }
+  for (uint32_t k = 0; k < count; ++k) canonical[inputOf[k]] = k;
 
-  // The first triangle: vertex 0, the next distinct one, the next not collinear with both.
-  uint32_t b = kNone, c = kNone;
-  for (uint32_t k = 1; k < count && b == kNone; ++k)
-    if (!samePoint(T.point(k), T.point(0))) b = k;
+  uint32_t b, c;
+  firstTriangle(T, count, b, c);
   if (b == kNone)
     return {Status::BadInput, "all " + std::to_string(count) + " input vertices coincide"};
-  for (uint32_t k = b + 1; k < count && c == kNone; ++k)
-    if (orient2d(T.point(0), T.point(b), T.point(k)) != 0) c = k;
   if (c == kNone)
     return {Status::BadInput, "all " + std::to_string(count) +
                                   " input vertices are collinear: there is no triangle to make"};

@@ -591,11 +591,15 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
   const size_t warningsBefore = stats.warnings.size(), phasesBefore = stats.phases.size();
   const bool constrained = options.mode != Mode::Delaunay;
   const uint32_t n = uint32_t(input.vertexCount());
-  T.trackSegments = T.trackWinding = constrained;
-  // Each vertex makes about two triangles (ghosts included): room up front avoids copies as
-  // the arrays grow (only room: a duplicate vertex makes none, and untouched room costs no
-  // memory).
-  T.reserveCapacity(n, 2 * size_t(n) + 16);
+  auto freshStore = [&] {
+    T = Triangulation{};
+    T.trackSegments = T.trackWinding = constrained;
+    // Each vertex makes about two triangles (ghosts included): room up front avoids copies as
+    // the arrays grow (only room: a duplicate vertex makes none, and untouched room costs no
+    // memory).
+    T.reserveCapacity(n, 2 * size_t(n) + 16);
+  };
+  freshStore();
   std::vector<uint32_t> canonical;
   auto countDuplicates = [&] {
     for (uint32_t i = 0; i < n; ++i) stats.duplicates += inputOf[canonical[i]] != i;
@@ -612,9 +616,7 @@ StepResult triangulateDomain(const Pslg& input, const Options& options, const Bu
                                             declined);
     if (declined) {
       stats.warnings.resize(warningsBefore);
-      T = Triangulation{};
-      T.trackSegments = T.trackWinding = true;
-      T.reserveCapacity(n, 2 * size_t(n) + 16);
+      freshStore();
     } else {
       if (!step.ok()) return step;
       countDuplicates();

@@ -96,6 +96,23 @@ inline void addRing(acutemesh::Pslg& in, const std::vector<double>& xy) {
     in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
 }
 
+// A random star-shaped polygon of n edges (bench/gen.mjs's kind): sorted random angles,
+// radii in [0.5, 1]. Its edges are long against the vertices' spacing: spikes.
+inline acutemesh::Pslg starPolygon(int n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> angles(static_cast<size_t>(n));
+  for (double& a : angles) a = 2 * M_PI * u(rng);
+  std::sort(angles.begin(), angles.end());
+  acutemesh::Pslg in;
+  for (int i = 0; i < n; ++i) {
+    const double r = 0.5 + 0.5 * u(rng), a = angles[size_t(i)];
+    in.points.insert(in.points.end(), {r * std::cos(a), r * std::sin(a)});
+    in.segments.insert(in.segments.end(), {uint32_t(i), uint32_t((i + 1) % n)});
+  }
+  return in;
+}
+
 // A generated coastline (the kind of outline maps bring): a polygon of `corners` corners
 // around (cx, cy), each edge split `levels` times at a point pushed off its middle along its
 // normal by up to 0.12 of its length (corners * 2^levels vertices), from `rng`.

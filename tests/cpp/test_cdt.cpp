@@ -14,11 +14,13 @@
 #include "acutemesh/io.h"
 #include "acutemesh/predicates.h"
 #include "build.h"
+#include "fixtures.h"
 #include "rounding.h"
 #include "triangulation.h"
 
 using namespace acutemesh;
 using namespace acutemesh::detail;
+using fixtures::starPolygon;
 
 namespace {
 
@@ -73,24 +75,6 @@ size_t realTriangles(const Triangulation& T) {
   size_t n = 0;
   for (uint32_t t = 0; t < T.triangleSlots(); ++t) n += !T.isFree(t) && !T.isGhost(t);
   return n;
-}
-
-// A random star-shaped polygon: sorted random angles, radii in [0.5, 1].
-Pslg starPolygon(int n, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<double> angles(n);
-  for (double& a : angles) a = 2 * M_PI * u(rng);
-  std::sort(angles.begin(), angles.end());
-  Pslg in;
-  for (int i = 0; i < n; ++i) {
-    const double r = 0.5 + 0.5 * u(rng);
-    in.points.push_back(r * std::cos(angles[i]));
-    in.points.push_back(r * std::sin(angles[i]));
-    in.segments.push_back(i);
-    in.segments.push_back((i + 1) % n);
-  }
-  return in;
 }
 
 // Every non-fixed edge between two real triangles is locally Delaunay.

@@ -233,18 +233,7 @@ TEST(Progress, LargeCoastlineMovesSteadilyAndCancels) {
 // after it (the United States' segments take 0.2 s), in both ways of inserting them: after
 // the Delaunay triangulation (a coastline) and along with their ends (a large star polygon).
 TEST(Progress, CancelLandsInTheSegmentsPhase) {
-  Pslg star;
-  const int n = 20000;
-  std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<double> angles(n);
-  for (double& a : angles) a = 2 * M_PI * u(rng);
-  std::sort(angles.begin(), angles.end());
-  for (int i = 0; i < n; ++i) {
-    const double r = 0.5 + 0.5 * u(rng);
-    star.points.insert(star.points.end(), {r * std::cos(angles[i]), r * std::sin(angles[i])});
-    star.segments.insert(star.segments.end(), {uint32_t(i), uint32_t((i + 1) % n)});
-  }
+  const Pslg star = fixtures::starPolygon(20000, 3);
   for (const Pslg& in : {coastline(), star}) {
     std::atomic<bool> cancel{false};
     Options o;
