@@ -11,6 +11,7 @@
 // flipped away (Sloan's method) and Delaunay is restored with Lawson flips. Long chained
 // segments may instead go in one pass with their ends (triangulateAlongSegments, build.h).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <deque>
@@ -48,50 +49,36 @@ class SegmentInserter {
     return representative_[seg];
   }
   void findRepresentatives() {
-    size_t n = input_.segmentCount();
-    if (endsBelow_ != kNone) {
-      // Along the segments, the ends of segments not yet inserted have no canonical vertex
-      // yet: the same grouping by their coordinates (canonical vertices are equal points).
-      struct End {
-        double x, y;
-        bool operator<(const End& o) const { return x < o.x || (x == o.x && y < o.y); }
-        bool operator==(const End& o) const { return x == o.x && y == o.y; }
-      };
-      struct Key {
-        End lo, hi;
-        uint32_t seg;
-      };
-      std::vector<Key> keyed(n);
-      for (size_t i = 0; i < n; ++i) {
-        const double *a = &input_.points[2 * size_t(input_.segments[2 * i])],
-                     *b = &input_.points[2 * size_t(input_.segments[2 * i + 1])];
-        End p{a[0], a[1]}, q{b[0], b[1]};
-        keyed[i] = {std::min(p, q), std::max(p, q), uint32_t(i)};
-      }
-      std::sort(keyed.begin(), keyed.end(), [](const Key& l, const Key& r) {
-        if (!(l.lo == r.lo)) return l.lo < r.lo;
-        if (!(l.hi == r.hi)) return l.hi < r.hi;
-        return l.seg < r.seg;
+    const size_t n = input_.segmentCount();
+    if (endsBelow_ == kNone) {
+      groupByEnds(n, [&](size_t i) {
+        const uint32_t a = canonical_[input_.segments[2 * i]];
+        const uint32_t b = canonical_[input_.segments[2 * i + 1]];
+        return (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
       });
-      representative_.resize(n);
-      for (size_t i = 0; i < n; ++i)
-        representative_[keyed[i].seg] =
-            i > 0 && keyed[i].lo == keyed[i - 1].lo && keyed[i].hi == keyed[i - 1].hi
-                ? representative_[keyed[i - 1].seg]
-                : keyed[i].seg;
       return;
     }
-    std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
-    for (size_t i = 0; i < n; ++i) {
-      uint32_t a = canonical_[input_.segments[2 * i]], b = canonical_[input_.segments[2 * i + 1]];
-      keyed[i] = {(uint64_t(std::min(a, b)) << 32) | std::max(a, b), uint32_t(i)};
-    }
+    // Along the segments, the ends of segments not yet inserted have no canonical vertex yet:
+    // the same grouping by their coordinates (canonical vertices are equal points).
+    groupByEnds(n, [&](size_t i) {
+      const double* a = &input_.points[2 * size_t(input_.segments[2 * i])];
+      const double* b = &input_.points[2 * size_t(input_.segments[2 * i + 1])];
+      const std::array<double, 2> p{a[0], a[1]}, q{b[0], b[1]};
+      const std::array<double, 2> lo = std::min(p, q), hi = std::max(p, q);
+      return std::array<double, 4>{lo[0], lo[1], hi[0], hi[1]};
+    });
+  }
+  // representative_[s]: the first of the segments whose keyOf (their ends) is s's.
+  template <class KeyOf>
+  void groupByEnds(size_t n, KeyOf keyOf) {
+    std::vector<std::pair<decltype(keyOf(0)), uint32_t>> keyed(n);
+    for (size_t i = 0; i < n; ++i) keyed[i] = {keyOf(i), uint32_t(i)};
     std::sort(keyed.begin(), keyed.end());
     representative_.resize(n);
     for (size_t i = 0; i < n; ++i)
-      representative_[keyed[i].second] =
-          i > 0 && keyed[i].first == keyed[i - 1].first ? representative_[keyed[i - 1].second]
-                                                        : keyed[i].second;
+      representative_[keyed[i].second] = i > 0 && keyed[i].first == keyed[i - 1].first
+                                             ? representative_[keyed[i - 1].second]
+                                             : keyed[i].second;
   }
   const double* P(uint32_t v) const { return T_.point(v); }
   const double* segmentEnd(uint32_t seg, int k) const {
