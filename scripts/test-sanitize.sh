@@ -19,7 +19,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 heavy='EveryCgshopInstance|ThreadsMakeTheSameMesh|MaxAngleBelowNinety|AutoSaysTheBoundReached'
-heavy+='|Parts\.BelowNinetyCutShort|Optimize\.QualityWithSizesPolishEnds|Progress\.FractionMovesBelow90|(Progress|Parts)\.LargeCoastline|Optimize\.TimeLimitEndsTheSearch|(Labels|Sizes|Parts)\.[A-Za-z]*ByPartsOnAnyThreads|^cli$'
+heavy+='|LetterAAtItsFloorPlusThree|Parts\.BelowNinetyCutShort|Optimize\.QualityWithSizesPolishEnds|Progress\.FractionMovesBelow90|(Progress|Parts)\.LargeCoastline|Optimize\.TimeLimitEndsTheSearch|(Labels|Sizes|Parts)\.[A-Za-z]*ByPartsOnAnyThreads|^cli$'
 skip=${SANITIZE_SKIP-consumer|$heavy}
 flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all"
 # Configured each time, so that an older build-asan/ gets these flags too. (They are the build

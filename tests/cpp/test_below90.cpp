@@ -289,6 +289,19 @@ TEST(Below90, DISABLED_CgshopSimplePolygonExterior20Auto) {
   expectAcute(f.input.pslg, f.base, kAutoMaxAngle, &acute, "exterior-20_80");
 }
 
+// The floor + 3 on the letter A (floor 72): met on every copy. Before the descent split the
+// edges of the triangles it stalled at, it stopped at 76 degrees.
+TEST(Below90, LetterAAtItsFloorPlusThree) {
+  const Fixture f = fixture(kData + "/A.poly");
+  for (int copy = kSame; copy < kCopies; ++copy) {
+    const Pslg in = copyOf(f.input.pslg, Copy(copy));
+    const std::string what = std::string("A.poly") + kCopyName[copy];
+    const Result r = expectAcute(in, f.base, 75, nullptr, what);
+    EXPECT_TRUE(r.stats.targetMet) << what << ": " << r.message;
+    EXPECT_EQ(r.stats.angleFloor, 72) << what;
+  }
+}
+
 // A.poly turned by 30 degrees: its feet's bottoms are collinear, and turned (rounded) some of
 // their vertices lie inside the hull edge along both feet by 1e-19, behind slivers outside the
 // domain that no double splitting a foot's bottom falls into. RefineState::start puts such

@@ -165,8 +165,19 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
         relay->note("improve", done + share * (double(i) + part) / double(levels.size()),
                     s.T.vertexCount());
     };
-    const bool levelMet = descent.run(within);
-    moves -= allowed - left;
+    bool levelMet = descent.run(within);
+    // Where it stalls past its first bound (a start must meet that one as it is), more points
+    // where the bound is missed: the edges of those triangles split, and the descent again.
+    for (int retry = 0; i > 0 && !levelMet && retry < kDescentSplitRetries && !budget.stop() &&
+                        !limits.reached(s.T.vertexCount());
+         ++retry) {
+      const uint32_t before = s.T.vertexCount();
+      if (descent.splitMissed() == 0) break;
+      const uint64_t credit = uint64_t(kDescentMovesPerSplit * double(s.T.vertexCount() - before));
+      left += credit;
+      levelMet = descent.run(within);
+    }
+    moves = moves - allowed + left;  // (what this bound used, less what its splits granted)
     if (!levelMet) break;
     met = s;
     reached = level;

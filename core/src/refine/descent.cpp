@@ -637,8 +637,35 @@ bool AngleDescent::unstick(double& least) {
   return false;
 }
 
+size_t AngleDescent::splitMissed() {
+  const Triangulation& T = s_.T;
+  std::vector<std::pair<uint32_t, uint32_t>> edges;
+  for (uint32_t t = 0; t < T.triangleSlots(); ++t)
+    if (job_.target.misses(s_, t))
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t a = T.tri[3 * t + k], b = T.tri[3 * t + (k + 1) % 3];
+        edges.push_back({std::min(a, b), std::max(a, b)});
+      }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  size_t split = 0;
+  for (const auto& [a, b] : edges) {
+    if (job_.limits->reached(T.vertexCount()) || job_.budget.stop()) break;
+    if (T.vertexEdge[a] == kNone) continue;
+    uint32_t e0 = T.vertexEdge[a], e = e0, found = kNone;
+    do {
+      if (T.tri[next(e)] == b) found = e;
+      e = T.opp[prev(e)];
+    } while (e != e0 && found == kNone);
+    if (found == kNone || T.isGhost(found / 3)) continue;
+    split += apply({Move::Split, found / 3, found, 0, 0});
+  }
+  return split;
+}
+
 bool AngleDescent::run(const std::function<void(double)>& onProgress) {
   onProgress_ = &onProgress;
+  round_ = 0;
   double least = INFINITY;
   int depth = 1;
   for (int stale = 0; round_ < kDescentRounds; ++round_) {

@@ -12,6 +12,8 @@
 //     does not pay gets a second at the worst triangle near it. What does not pay is undone.
 // It stops when every triangle meets the target, when rounds stop lowering the violation, at
 // its move budget, the Steiner limit or the run's budget.
+// Where it stalls, below90.cpp splits the edges of the triangles still missing the target
+// (splitMissed) and runs it again: more points to move where they were lacking.
 #pragma once
 
 #include <cstdint>
@@ -38,6 +40,9 @@ class AngleDescent {
   bool run(const std::function<void(double)>& onProgress);
   // One sweep of smoothing over every Steiner point; the number of points moved.
   size_t smooth();
+  // Splits in the middle every edge of the triangles that miss the target: more points to
+  // move where the descent stalled. The number of edges split.
+  size_t splitMissed();
 
  private:
   bool gather(uint32_t v);

@@ -141,6 +141,11 @@ constexpr double kJointRoom = 0.5;
 constexpr int kJointSteps = 30;
 constexpr double kJointFirstStep = 0.5, kJointFarthest = 0.3;
 constexpr int kJointTries = 12;
+// Where a descent stalls, the edges of the triangles still missing its bound are split and it
+// runs again, this many times at most.
+constexpr int kDescentSplitRetries = 5;
+// The moves a descent may try grow by this many for each point the splits add.
+constexpr double kDescentMovesPerSplit = 64;
 // Rounds per bound at most.
 constexpr int kDescentRounds = 24;
 
