@@ -657,7 +657,8 @@ size_t AngleDescent::splitMissed() {
       if (T.tri[next(e)] == b) found = e;
       e = T.opp[prev(e)];
     } while (e != e0 && found == kNone);
-    if (found == kNone || T.isGhost(found / 3)) continue;
+    if (found != kNone && !T.inDomain(found / 3)) found = T.opp[found];  // (its domain side)
+    if (found == kNone || !T.inDomain(found / 3)) continue;
     split += apply({Move::Split, found / 3, found, 0, 0});
   }
   return split;
