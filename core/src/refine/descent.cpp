@@ -571,6 +571,9 @@ bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
       recording_ = true;
       smoothAround(touched_);
       recording_ = false;
+      // (A vertex moved in several sweeps is listed once: its star is summed once anyway.)
+      std::sort(changed_.begin(), changed_.end());
+      changed_.erase(std::unique(changed_.begin(), changed_.end()), changed_.end());
       const double after = current + violationNearChanges(s_) - violationNearChangesAt(mark);
       if (after < now - 1e-12) {
         now = after;
