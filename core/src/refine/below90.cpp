@@ -139,7 +139,8 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
   RefineState met;
   double reached = 0;
   uint64_t moves = uint64_t(kDescentMoves + kDescentMovesPerVertex * s.T.vertexCount());
-  const uint64_t firstMoves = uint64_t(kDescentMoves + kDescentMovesPerVertex * double(reference));
+  const uint64_t firstMoves =
+      uint64_t(kDescentFirstMoves + kDescentFirstMovesPerVertex * double(reference));
   const std::vector<double> levels = levelsDownTo(lowest);
   for (size_t i = 0; i < levels.size(); ++i) {
     const double level = levels[i];

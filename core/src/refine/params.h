@@ -129,7 +129,9 @@ constexpr double kDescentSlack = 0.03;
 // Smoothing sweeps around a move at most.
 constexpr int kDescentLocalSweeps = 2;
 // Moves one descent may try, over all its bounds: this many, and this many per vertex.
-constexpr double kDescentMoves = 2000, kDescentMovesPerVertex = 8;
+constexpr double kDescentMoves = 6000, kDescentMovesPerVertex = 16;
+// Of those, the first bound may take this many and this many per vertex of the acute mesh.
+constexpr double kDescentFirstMoves = 2000, kDescentFirstMovesPerVertex = 8;
 // The deepest look-ahead: moves in a row, each at the worst triangle near the last.
 constexpr int kDescentDepth = 3;
 // Joint smoothing (joint_smooth.h), where the descent's moves stop paying: it aims this many
