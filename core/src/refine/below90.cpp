@@ -249,8 +249,8 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
   exact.clear();  // (non-obtuse only)
   // Each later try may use a few times the points of the acute mesh.
   cap = uint32_t(std::min<double>(kBelow90Points * double(best.steiner) + 200, double(kMaxVertices)));
-  const double lowest =
-      automatic ? angleFloor(smallestDomainAngle(start.T)) + kAutoMargin : options.maxAngle;
+  const double domainFloor = angleFloor(smallestDomainAngle(start.T));
+  const double lowest = automatic ? domainFloor + kAutoMargin : options.maxAngle;
   // (A domain whose floor is within a hair of 90 degrees leaves auto nothing to gain.)
   if (portableCos(lowest * kDegree) <= best.cosLargest) return finish({});
   const RefineState acute = best.state;
@@ -282,7 +282,10 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
   // threads the pair runs at once (the second's progress unreported): the same mesh either way.
   constexpr size_t count = std::size(kStarts), batch = 2;
   const bool directAlone = acute.T.vertexCount() >= kDirectAloneFrom;
-  for (size_t i = 0, n = 0; i < count && !best.met && !budget.stop(); i += n) {
+  // (Auto: no further start once one is within kAutoEnough of the floor.)
+  const double enough = portableCos((domainFloor + kAutoEnough) * kDegree);
+  auto done = [&] { return best.met || (automatic && best.acute && best.cosLargest >= enough); };
+  for (size_t i = 0, n = 0; i < count && !done() && !budget.stop(); i += n) {
     n = std::min(i == 0 && directAlone ? 1 : batch, count - i);
     std::vector<Candidate> results(n);
     std::vector<char> ran(n, 0);

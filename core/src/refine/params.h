@@ -169,6 +169,8 @@ constexpr double kGradedRoom = 4;
 constexpr double kCandidateEven = 0.1;
 // --max-angle auto aims for the domain's floor plus this.
 constexpr double kAutoMargin = 0.5;
+// Auto tries no further start once its best mesh is within this many degrees of the floor.
+constexpr double kAutoEnough = 2;
 
 static_assert(kHalvesGainFrom >= kSmallPolish && kLargeRoundFrom >= kHalvesGainFrom,
               "the rounds in halves start at kSmallPolish and run the larger meshes' round");
