@@ -282,8 +282,10 @@ StepResult refineBelow90(const RefineState& start, const Pslg& input, const Opti
   // threads the pair runs at once (the second's progress unreported): the same mesh either way.
   constexpr size_t count = std::size(kStarts), batch = 2;
   const bool directAlone = acute.T.vertexCount() >= kDirectAloneFrom;
-  // (Auto: no further start once one is within kAutoEnough of the floor.)
-  const double enough = portableCos((domainFloor + kAutoEnough) * kDegree);
+  // (Auto: no further start once one is within kAutoEnough of the floor, or of a floor near
+  // 90, a quarter of the way from it to 90.)
+  const double enough =
+      portableCos((domainFloor + std::min(kAutoEnough, (90 - domainFloor) / 4)) * kDegree);
   auto done = [&] { return best.met || (automatic && best.acute && best.cosLargest >= enough); };
   for (size_t i = 0, n = 0; i < count && !done() && !budget.stop(); i += n) {
     n = std::min(i == 0 && directAlone ? 1 : batch, count - i);

@@ -169,7 +169,8 @@ constexpr double kGradedRoom = 4;
 constexpr double kCandidateEven = 0.1;
 // --max-angle auto aims for the domain's floor plus this.
 constexpr double kAutoMargin = 0.5;
-// Auto tries no further start once its best mesh is within this many degrees of the floor.
+// Auto tries no further start once its best mesh is within this many degrees of the floor (a
+// floor near 90: a quarter of the way from it to 90).
 constexpr double kAutoEnough = 2;
 
 static_assert(kHalvesGainFrom >= kSmallPolish && kLargeRoundFrom >= kHalvesGainFrom,
