@@ -160,10 +160,14 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
     const uint64_t allowed = i == 0 ? std::min(moves, firstMoves) : moves;
     uint64_t left = allowed;
     AngleDescent descent(s, job, refiner.insertion(), refiner.boundary(), left);
-    // (Progress within the bound: the part of its rounds done, noted for the relay to send.)
+    // (Progress within the bound: the part of its rounds done, noted for the relay to send;
+    // where splits may follow, the first run is its first half and each run after the splits
+    // an equal share of the rest.)
+    double runFrom = 0, runWidth = i > 0 ? 0.5 : 1;
     auto within = [&](double part) {
       if (ProgressRelay* relay = budget.progress())
-        relay->note("improve", done + share * (double(i) + part) / double(levels.size()),
+        relay->note("improve",
+                    done + share * (double(i) + runFrom + runWidth * part) / double(levels.size()),
                     s.T.vertexCount());
     };
     bool levelMet = descent.run(within);
@@ -176,6 +180,8 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
       if (descent.splitMissed() == 0) break;
       const uint64_t credit = uint64_t(kDescentMovesPerSplit * double(s.T.vertexCount() - before));
       left += credit;
+      runFrom = 0.5 + 0.5 * double(retry) / kDescentSplitRetries;
+      runWidth = 0.5 / kDescentSplitRetries;
       levelMet = descent.run(within);
     }
     moves = moves - allowed + left;  // (what this bound used, less what its splits granted)
