@@ -334,9 +334,11 @@ void expectStoppedShort(const Pslg& in, const Options& o, const Result& r, const
 
 }  // namespace
 
-// A.poly at 74 (not reached: the whole run descends to 80.04 in ~1.5 s natively, after the
-// acute mesh's ~5 ms): time limits of a few to a few dozen times the acute mesh's time, in the
-// build at hand, stop it before the acute mesh is done with, or in the middle of the descent.
+// A.poly at 74 (the whole run meets it in ~1.5 s natively, after the acute mesh's ~5 ms): time
+// limits of a few to a few dozen times the acute mesh's time, in the build at hand, stop it
+// before the acute mesh is done with, or in the middle of the descent. A run that meets the
+// bound within its limit (the slowest, in a build whose acute mesh is slow) is not cut short:
+// it is checked as a met run; the first, at 3 times, always is.
 TEST(Below90, TimeLimitMidDescentKeepsTheBestMesh) {
   const Fixture f = fixture(kData + "/A.poly");
   const Pslg& in = f.input.pslg;
@@ -347,10 +349,19 @@ TEST(Below90, TimeLimitMidDescentKeepsTheBestMesh) {
     o.mode = Mode::Acute;
     o.maxAngle = 74;
     o.timeLimit = times * std::max(acute.stats.seconds, 1e-3);
+    const std::string what = "A.poly at 74, " + std::to_string(o.timeLimit) + " s";
     Result r = mesh(in, o);
-    expectStoppedShort(in, o, r, acute, "A.poly at 74, " + std::to_string(o.timeLimit) + " s");
-    EXPECT_EQ(r.status, Status::TargetNotMet);
     lowest = std::min(lowest, r.stats.maxAngle);
+    if (times > 3 && r.stats.targetMet) {
+      EXPECT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+      EXPECT_EQ(fixtures::validationErrors(in, o, r.mesh), "") << what;
+      EXPECT_TRUE(r.stats.certified) << what;
+      EXPECT_EQ(r.stats.angleBound, 74) << what;
+      EXPECT_EQ(cornersNotBelow(r.mesh, 74), 0u) << what;
+      continue;
+    }
+    expectStoppedShort(in, o, r, acute, what);
+    EXPECT_EQ(r.status, Status::TargetNotMet);
   }
   // Some limit fell in the descent, which had lowered the largest angle, and that mesh was kept.
   EXPECT_LT(lowest, acute.stats.maxAngle - 1);
