@@ -232,7 +232,7 @@ void runRound(std::vector<Part>& parts, const Options& target, const Budget& bud
       parts[p].outOfTime = options.timeLimit > 0 && parts[p].result.status != Status::Ok &&
                            parts[p].result.stats.seconds >= options.timeLimit;
       // (No longer needed, unless the run stopped before it had a mesh: the assembly takes the
-      // part's triangles of T then, with its segments from here.)
+      // part's CDT triangles (Part::corners) then, with its segments from here.)
       if (round != Round::Acute && !parts[p].result.mesh.triangles.empty()) parts[p].pslg = Pslg{};
       if (shareTime && isAcute(parts[p].result)) parts[p].acute = Result{};
       progress.finish(p);

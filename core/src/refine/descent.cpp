@@ -654,12 +654,7 @@ size_t AngleDescent::splitMissed() {
   size_t split = 0;
   for (const auto& [a, b] : edges) {
     if (job_.limits->reached(T.vertexCount()) || job_.budget.stop()) break;
-    if (T.vertexEdge[a] == kNone) continue;
-    uint32_t e0 = T.vertexEdge[a], e = e0, found = kNone;
-    do {
-      if (T.tri[next(e)] == b) found = e;
-      e = T.opp[prev(e)];
-    } while (e != e0 && found == kNone);
+    uint32_t found = T.findEdge(a, b);
     if (found != kNone && !T.inDomain(found / 3)) found = T.opp[found];  // (its domain side)
     if (found == kNone || !T.inDomain(found / 3)) continue;
     split += apply({Move::Split, found / 3, found, 0, 0});

@@ -132,6 +132,11 @@ constexpr int kDescentLocalSweeps = 2;
 constexpr double kDescentMoves = 6000, kDescentMovesPerVertex = 16;
 // Of those, the first bound may take this many and this many per vertex of the acute mesh.
 constexpr double kDescentFirstMoves = 2000, kDescentFirstMovesPerVertex = 8;
+// Where a descent stalls, the edges of the triangles still missing its bound are split and it
+// runs again, this many times at most.
+constexpr int kDescentSplitRetries = 5;
+// The moves a descent may try grow by this many for each point the splits add.
+constexpr double kDescentMovesPerSplit = 64;
 // The deepest look-ahead: moves in a row, each at the worst triangle near the last.
 constexpr int kDescentDepth = 3;
 // Joint smoothing (joint_smooth.h), where the descent's moves stop paying: it aims this many
@@ -143,11 +148,6 @@ constexpr double kJointRoom = 0.5;
 constexpr int kJointSteps = 30;
 constexpr double kJointFirstStep = 0.5, kJointFarthest = 0.3;
 constexpr int kJointTries = 12;
-// Where a descent stalls, the edges of the triangles still missing its bound are split and it
-// runs again, this many times at most.
-constexpr int kDescentSplitRetries = 5;
-// The moves a descent may try grow by this many for each point the splits add.
-constexpr double kDescentMovesPerSplit = 64;
 // Rounds per bound at most.
 constexpr int kDescentRounds = 24;
 
