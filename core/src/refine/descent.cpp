@@ -43,6 +43,23 @@ double triangleMargin(const Target& target, const double* a, const double* b, co
   return target.minAngle > 0 ? std::min(m, target.cosMin - smallestCosine(a, b, c)) : m;
 }
 
+// Whether triangle a, b, c's largest angle surely has a cosine below w, without the root and
+// the division of largestCosine: (p + q - o) / (2 sqrt(pq)) < w, squared, by a margin far
+// above their rounding (so it never says yes where largestCosine would not).
+bool largestCosineBelow(const double* a, const double* b, const double* c, double w) {
+  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
+  double n, pq;  // p + q - o and pq, o the longest side
+  if (la >= lb && la >= lc)
+    n = lb + lc - la, pq = lb * lc;
+  else if (lb >= lc)
+    n = la + lc - lb, pq = la * lc;
+  else
+    n = la + lb - lc, pq = la * lb;
+  w -= 1e-9;
+  if (w > 0) return n < 0 || n * n < 4 * w * w * pq;
+  return n < 0 && n * n > 4 * w * w * pq;
+}
+
 }  // namespace
 
 // The star of v in star_ (its triangles but ghosts), and for a point on a segment its
@@ -110,13 +127,19 @@ bool AngleDescent::improvesAt(uint32_t v, const double* p, bool bestValid) {
   Triangulation& T = s_.T;
   putAt(v, p);
   const double worst = bestValid && !best_.empty() ? best_.front() - kEven : -INFINITY;
-  try_.clear();
+  // First the cheap tests that turn most tries down: a triangle turned over, or one whose
+  // largest angle alone is worse than the best's worst.
   for (size_t i = 0; i < star_.size(); ++i) {
     const uint32_t* c = &T.tri[3 * star_[i]];
     const double *a = T.point(c[0]), *b = T.point(c[1]), *d = T.point(c[2]);
     if ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]) <= 0) return false;
+    if (starInside_[i] && largestCosineBelow(a, b, d, worst + target.cosMax)) return false;
+  }
+  try_.clear();
+  for (size_t i = 0; i < star_.size(); ++i) {
     if (!starInside_[i]) continue;
-    const double m = triangleMargin(target, a, b, d);
+    const uint32_t* c = &T.tri[3 * star_[i]];
+    const double m = triangleMargin(target, T.point(c[0]), T.point(c[1]), T.point(c[2]));
     if (m < worst) return false;
     try_.push_back(m);
   }
