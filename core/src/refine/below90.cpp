@@ -198,6 +198,9 @@ Candidate descend(RefineState s, const Pslg& input, const Options& options, cons
   Refiner refiner(met, job);
   if (!budget.stop()) {
     const ProgressRelay::Scope quiet(budget.progress());  // (the polish's own fractions: not ours)
+    // The points the bound reached does not need out first (the newest first: the descent's
+    // and its splits'), then the polish.
+    thinOut(met, job, refiner.insertion(), refiner.boundary(), kThinPasses);
     refiner.polish();
   }
   Candidate polished = judge(std::move(met), input, options);

@@ -570,6 +570,26 @@ uint32_t AngleDescent::worstNear() {
 // first that lowers the violation below `now`. With depth > 1 a move that does not is given
 // a second move at the worst triangle near it (a look-ahead: a corner often needs two points
 // before either helps). What is not kept is put back as it was.
+bool AngleDescent::applySmoothed(const Move& m) {
+  touched_.clear();
+  changed_.clear();
+  s_.T.touched = &touched_;
+  const bool changed = apply(m);
+  s_.T.touched = nullptr;
+  if (!changed) return false;
+  if (m.kind == Move::Remove) changed_.push_back(m.what);
+  for (uint32_t x : touched_)
+    for (int k = 0; k < 3; ++k)
+      if (!s_.T.isFree(x) && s_.T.tri[3 * x + k] != kGhost) changed_.push_back(s_.T.tri[3 * x + k]);
+  recording_ = true;
+  smoothAround(touched_);
+  recording_ = false;
+  // (A vertex moved in several sweeps is listed once: its star is summed once anyway.)
+  std::sort(changed_.begin(), changed_.end());
+  changed_.erase(std::unique(changed_.begin(), changed_.end()), changed_.end());
+  return true;
+}
+
 bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
   std::vector<Move> moves;
   movesFor(t, moves);
@@ -580,23 +600,7 @@ bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
     if (job_.budget.stop() || movesLeft_ == 0) break;
     --movesLeft_;
     const Journal::Mark mark = s_.mark();
-    touched_.clear();
-    changed_.clear();
-    s_.T.touched = &touched_;
-    const bool changed = apply(m);
-    s_.T.touched = nullptr;
-    if (changed) {
-      if (m.kind == Move::Remove) changed_.push_back(m.what);
-      for (uint32_t x : touched_)
-        for (int k = 0; k < 3; ++k)
-          if (!s_.T.isFree(x) && s_.T.tri[3 * x + k] != kGhost)
-            changed_.push_back(s_.T.tri[3 * x + k]);
-      recording_ = true;
-      smoothAround(touched_);
-      recording_ = false;
-      // (A vertex moved in several sweeps is listed once: its star is summed once anyway.)
-      std::sort(changed_.begin(), changed_.end());
-      changed_.erase(std::unique(changed_.begin(), changed_.end()), changed_.end());
+    if (applySmoothed(m)) {
       const double after = current + violationNearChanges(s_) - violationNearChangesAt(mark);
       if (after < now - 1e-12) {
         now = after;
@@ -613,7 +617,7 @@ bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
   }
   if (outermost) {
     s_.T.journal = nullptr;
-    journal_.slots.clear(), journal_.edges.clear(), journal_.points.clear(), journal_.radii.clear();
+    clearJournal();
   }
   return kept;
 }
@@ -717,6 +721,41 @@ bool AngleDescent::run(const std::function<void(double)>& onProgress) {
     }
   }
   return false;
+}
+
+size_t AngleDescent::thin() {
+  Triangulation& T = s_.T;
+  T.journal = &journal_;
+  size_t removed = 0;
+  for (uint32_t v = T.vertexCount(); v-- > uint32_t(job_.input.vertexCount());) {
+    if (job_.improvementOver() || movesLeft_ == 0) break;
+    if (T.vertexEdge[v] == kNone ||
+        !(s_.role[v] == kFree || s_.role[v] == kOnSegment || s_.role[v] == kOnHull))
+      continue;
+    --movesLeft_;
+    const Journal::Mark mark = s_.mark();
+    if (applySmoothed({Move::Remove, kNone, v, 0, 0}) && violationNearChanges(s_) == 0)
+      ++removed;
+    else
+      s_.undoTo(mark);
+    clearJournal();
+  }
+  T.journal = nullptr;
+  return removed;
+}
+
+size_t thinOut(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
+               int passes) {
+  uint64_t moves = uint64_t(passes) * s.T.vertexCount();
+  AngleDescent descent(s, job, insertion, boundary, moves);
+  size_t removed = 0;
+  for (int pass = 0; pass < passes && !job.improvementOver(); ++pass) {
+    const size_t steiner = s.liveSteiner(job.input.vertexCount());
+    const size_t out = descent.thin();
+    removed += out;
+    if (double(out) < kThinGain * double(steiner)) break;
+  }
+  return removed;
 }
 
 }  // namespace acutemesh::detail

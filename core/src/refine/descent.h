@@ -43,6 +43,10 @@ class AngleDescent {
   // Splits in the middle every edge of the triangles that miss the target: more points to
   // move where the descent stalled. The number of edges split.
   size_t splitMissed();
+  // Takes out the Steiner points a met target does not need: each in turn removed, the points
+  // around it smoothed again, and left out where every triangle there still meets the target.
+  // The number taken out.
+  size_t thin();
 
  private:
   bool gather(uint32_t v);
@@ -64,6 +68,9 @@ class AngleDescent {
   };
   void movesFor(uint32_t t, std::vector<Move>& out) const;
   bool apply(const Move& m);
+  // apply(m), then smoothAround what it changed, with changed_ every vertex whose star changed
+  // (each once); false where m changed nothing.
+  bool applySmoothed(const Move& m);
   bool insertFree(uint32_t from, const double* x);
   uint32_t worstNear();
   bool fix(uint32_t t, int depth, double& now, double current);
@@ -98,6 +105,9 @@ class AngleDescent {
   // fix()'s moves are tried in place and taken back through this (Triangulation::journal),
   // not on copies of the state: a move costs what it touches.
   Journal journal_;
+  void clearJournal() {
+    journal_.slots.clear(), journal_.edges.clear(), journal_.points.clear(), journal_.radii.clear();
+  }
   // violationNearChangesAt's: per slot and vertex, 1 + the index of its first note since the
   // mark (0: none), reset after each use.
   std::vector<uint32_t> oldSlot_, oldEdge_, oldPoint_;
@@ -107,5 +117,11 @@ class AngleDescent {
   bool recording_ = false;
   std::vector<uint32_t> changed_, slots_;
 };
+
+// Passes of AngleDescent::thin over s, which meets job's target (acute, below 90 or at it),
+// until one takes out under kThinGain of its Steiner points, `passes` at most. The number
+// taken out.
+size_t thinOut(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
+               int passes);
 
 }  // namespace acutemesh::detail

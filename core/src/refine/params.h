@@ -137,6 +137,10 @@ constexpr double kDescentFirstMoves = 2000, kDescentFirstMovesPerVertex = 8;
 constexpr int kDescentSplitRetries = 5;
 // The moves a descent may try grow by this many for each point the splits add.
 constexpr double kDescentMovesPerSplit = 64;
+// At the bound a descent reached, passes over its Steiner points that take out those the bound
+// does not need (AngleDescent::thin): this many at most, until one takes out under this share.
+constexpr int kThinPasses = 3;
+constexpr double kThinGain = 0.01;
 // The deepest look-ahead: moves in a row, each at the worst triangle near the last.
 constexpr int kDescentDepth = 3;
 // Joint smoothing (joint_smooth.h), where the descent's moves stop paying: it aims this many

@@ -55,7 +55,8 @@ void Polish::run() {
   }
 }
 
-void Polish::search(double seconds, uint64_t tries, uint64_t seed) {
+void Polish::search(double seconds, uint64_t tries, uint64_t seed,
+                    const std::function<void()>& thin) {
   const Target& target = job_.target;
   if (!target.countsPoints() || repair_.missesBeyondLeft()) return;
   const auto start = std::chrono::steady_clock::now();
@@ -143,6 +144,7 @@ void Polish::search(double seconds, uint64_t tries, uint64_t seed) {
       round(false);
       met = repair_.repairAll().ok() && !repair_.missesBeyondLeft();
     }
+    if (met && thin) thin();
     const size_t count = s_.liveSteiner(inputVertices);
     if (met && count < fewest) {
       best = s_, fewest = count;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "job.h"
@@ -35,7 +36,8 @@ class Polish {
   // The mesh left is the best found: never more points than it started with.
   // tries: at most that many (0: no cap); seconds 0: no time of its own (one of the two must
   // be set: the callers ask searchAsked).
-  void search(double seconds, uint64_t tries, uint64_t seed);
+  void search(double seconds, uint64_t tries, uint64_t seed,
+              const std::function<void()>& thin = nullptr);
 
  private:
   void smooth();

@@ -4,8 +4,9 @@
 #include <memory>
 #include <mutex>
 
-#include "exact_feet.h"
 #include "../size_field.h"
+#include "descent.h"
+#include "exact_feet.h"
 #include "geometry.h"
 #include "refiner.h"
 #include "threads.h"
@@ -311,9 +312,25 @@ class ConcurrentStrategies {
 }  // namespace
 
 void searchFewerPoints(RefineState& s, Refiner& refiner, const Job& job, const Options& search) {
+  // Acute targets (below 90 degrees too): the points the target does not need out first, and
+  // again after each try (AngleDescent::thin: where smoothing lets a point go, which the
+  // polish's removals do not try).
+  const bool thins = job.target.acute && !job.target.nonObtuse;
+  Options rest = search;  // (what the thinning leaves of the seconds)
+  if (thins) {
+    const double start = job.budget.elapsed(), until = job.limits->polishUntil;
+    if (search.optimize > 0) job.limits->polishUntil = start + search.optimize;
+    thinOut(s, job, refiner.insertion(), refiner.boundary(), kThinPasses);
+    job.limits->polishUntil = until;
+    if (search.optimize > 0) {
+      rest.optimize = search.optimize - (job.budget.elapsed() - start);
+      if (rest.optimize <= 0 && search.optimizeTries == 0) return;
+      rest.optimize = std::max(rest.optimize, 0.0);
+    }
+  }
   size_t chains = 1;
 #ifdef ACUTEMESH_THREADS
-  chains = std::max(1u, threadsFor(search));
+  chains = std::max(1u, threadsFor(rest));
 #endif
   std::vector<RefineState> copies(chains - 1, s);
   std::vector<RunLimits> limits(chains - 1, *job.limits);
@@ -325,9 +342,12 @@ void searchFewerPoints(RefineState& s, Refiner& refiner, const Job& job, const O
     refiners.push_back(std::make_unique<Refiner>(copies[i - 1], copyJobs[i - 1]));
   }
   auto chain = [&](size_t i) {
-    (i == 0 ? refiner : *refiners[i - 1])
-        .polisher()
-        .search(search.optimize, search.optimizeTries, search.seed + i);
+    Refiner& r = i == 0 ? refiner : *refiners[i - 1];
+    RefineState& state = i == 0 ? s : copies[i - 1];
+    const Job& j = i == 0 ? job : copyJobs[i - 1];
+    std::function<void()> thin;
+    if (thins) thin = [&] { thinOut(state, j, r.insertion(), r.boundary(), 1); };
+    r.polisher().search(rest.optimize, rest.optimizeTries, rest.seed + i, thin);
   };
 #ifdef ACUTEMESH_THREADS
   std::vector<std::thread> helpers;
