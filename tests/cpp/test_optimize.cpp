@@ -235,6 +235,25 @@ TEST(Optimize, TriesMakeTheSameMeshWithALoadFromAnotherThread) {
   EXPECT_EQ(again.mesh.triangles, first.mesh.triangles);
 }
 
+// Acute meshes are thinned before the search (AngleDescent::thin: each point taken out, its
+// neighbours smoothed, kept out where the target holds): one try takes points off the letter A
+// and the plate, where one try of the kicks and ruins alone took none (71 and 90 points).
+TEST(Optimize, AcuteIsThinnedBeforeTheSearch) {
+  for (const std::string file : {"A.poly", "plate.poly"}) {
+    const Input in = fixtures::load(fixtures::kData + "/" + file);
+    Options o;
+    o.mode = Mode::Acute;
+    o.threads = 1;
+    const Result base = mesh(in.pslg, o);
+    ASSERT_EQ(base.status, Status::Ok) << file << ": " << base.message;
+    o.optimizeTries = 1;
+    const Result r = mesh(in.pslg, o);
+    ASSERT_EQ(r.status, Status::Ok) << file << ": " << r.message;
+    expectGood(in.pslg, o, r, file);
+    EXPECT_LT(r.stats.steiner, base.stats.steiner) << file;
+  }
+}
+
 // Below 90 degrees the search keeps the bound asked for: the mesh is certified below it and has
 // no more points than the descent's.
 TEST(Optimize, BelowNinetyKeepsTheBound) {

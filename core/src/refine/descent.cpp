@@ -566,10 +566,6 @@ uint32_t AngleDescent::worstNear() {
   return worst;
 }
 
-// Tries the moves for t in turn, each followed by smoothing around what it changed; keeps the
-// first that lowers the violation below `now`. With depth > 1 a move that does not is given
-// a second move at the worst triangle near it (a look-ahead: a corner often needs two points
-// before either helps). What is not kept is put back as it was.
 bool AngleDescent::applySmoothed(const Move& m) {
   touched_.clear();
   changed_.clear();
@@ -590,6 +586,10 @@ bool AngleDescent::applySmoothed(const Move& m) {
   return true;
 }
 
+// Tries the moves for t in turn, each followed by smoothing around what it changed; keeps the
+// first that lowers the violation below `now`. With depth > 1 a move that does not is given
+// a second move at the worst triangle near it (a look-ahead: a corner often needs two points
+// before either helps). What is not kept is put back as it was.
 bool AngleDescent::fix(uint32_t t, int depth, double& now, double current) {
   std::vector<Move> moves;
   movesFor(t, moves);

@@ -35,7 +35,8 @@ class Polish {
   // that ends with fewer points is kept, one with more (or short of the target) is undone.
   // The mesh left is the best found: never more points than it started with.
   // tries: at most that many (0: no cap); seconds 0: no time of its own (one of the two must
-  // be set: the callers ask searchAsked).
+  // be set: the callers ask searchAsked). thin, if set, runs after each try's rounds (acute
+  // targets: AngleDescent::thin, searchFewerPoints).
   void search(double seconds, uint64_t tries, uint64_t seed,
               const std::function<void()>& thin = nullptr);
 
