@@ -19,12 +19,21 @@ constexpr double kDirections[8][2] = {{1, 0},           {0, 1},         {-1, 0},
 // squared length o (law of cosines).
 double cosineOpposite(double o, double p, double q) { return (p + q - o) / (2 * std::sqrt(p * q)); }
 
+// Triangle a, b, c's squared side lengths: o the longest, p and q the others.
+struct Sides {
+  double o, p, q;
+};
+Sides byLongest(const double* a, const double* b, const double* c) {
+  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
+  if (la >= lb && la >= lc) return {la, lb, lc};
+  if (lb >= lc) return {lb, la, lc};
+  return {lc, la, lb};
+}
+
 // The cosine of the largest angle of triangle a, b, c (opposite its longest side).
 double largestCosine(const double* a, const double* b, const double* c) {
-  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-  if (la >= lb && la >= lc) return cosineOpposite(la, lb, lc);
-  if (lb >= lc) return cosineOpposite(lb, la, lc);
-  return cosineOpposite(lc, la, lb);
+  const Sides s = byLongest(a, b, c);
+  return cosineOpposite(s.o, s.p, s.q);
 }
 
 // The cosine of the smallest angle of triangle a, b, c (opposite its shortest side).
@@ -47,14 +56,8 @@ double triangleMargin(const Target& target, const double* a, const double* b, co
 // the division of largestCosine: (p + q - o) / (2 sqrt(pq)) < w, squared, by a margin far
 // above their rounding (so it never says yes where largestCosine would not).
 bool largestCosineBelow(const double* a, const double* b, const double* c, double w) {
-  const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-  double n, pq;  // p + q - o and pq, o the longest side
-  if (la >= lb && la >= lc)
-    n = lb + lc - la, pq = lb * lc;
-  else if (lb >= lc)
-    n = la + lc - lb, pq = la * lc;
-  else
-    n = la + lb - lc, pq = la * lb;
+  const Sides s = byLongest(a, b, c);
+  const double n = s.p + s.q - s.o, pq = s.p * s.q;
   w -= 1e-9;
   if (w > 0) return n < 0 || n * n < 4 * w * w * pq;
   return n < 0 && n * n > 4 * w * w * pq;
@@ -744,18 +747,14 @@ size_t AngleDescent::thin() {
   return removed;
 }
 
-size_t thinOut(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
-               int passes) {
-  uint64_t moves = uint64_t(passes) * s.T.vertexCount();
+void thinOut(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
+             int passes) {
+  uint64_t moves = uint64_t(passes) * s.T.vertexCount();  // (one per point a pass: never short)
   AngleDescent descent(s, job, insertion, boundary, moves);
-  size_t removed = 0;
   for (int pass = 0; pass < passes && !job.improvementOver(); ++pass) {
     const size_t steiner = s.liveSteiner(job.input.vertexCount());
-    const size_t out = descent.thin();
-    removed += out;
-    if (double(out) < kThinGain * double(steiner)) break;
+    if (double(descent.thin()) < kThinGain * double(steiner)) break;
   }
-  return removed;
 }
 
 }  // namespace acutemesh::detail

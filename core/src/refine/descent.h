@@ -119,9 +119,8 @@ class AngleDescent {
 };
 
 // Passes of AngleDescent::thin over s, which meets job's target (acute, below 90 or at it),
-// until one takes out under kThinGain of its Steiner points, `passes` at most. The number
-// taken out.
-size_t thinOut(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
-               int passes);
+// until one takes out under kThinGain of its Steiner points, `passes` at most.
+void thinOut(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
+             int passes);
 
 }  // namespace acutemesh::detail
