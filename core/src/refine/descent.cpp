@@ -306,11 +306,16 @@ double AngleDescent::violationOf(const RefineState& s, uint32_t t) const {
   if (!T.inDomain(t)) return 0;
   const uint32_t* v = &T.tri[3 * t];
   const double* p[3] = {T.point(v[0]), T.point(v[1]), T.point(v[2])};
+  // (Non-obtuse targets, which only thinning serves: with the corners at exact feet.)
+  if (job_.target.nonObtuse)
+    return job_.target.worstCorner(s, t).k < 0
+               ? 0
+               : std::max(-triangleMargin(job_.target, p[0], p[1], p[2]), 1e-9);
   return violationAt(p);
 }
 
-// violationOf's for the domain triangle with corners p (the descent's targets are acute:
-// no exact feet, so the corners say it all).
+// violationOf's for the domain triangle with corners p, for acute targets (no exact feet, so
+// the corners say it all).
 double AngleDescent::violationAt(const double* const p[3]) const {
   const double m = triangleMargin(job_.target, p[0], p[1], p[2]);
   return m < 0 || job_.target.worstCorner(p, 0).k >= 0 ? std::max(-m, 1e-9) : 0;

@@ -118,8 +118,8 @@ class AngleDescent {
   std::vector<uint32_t> changed_, slots_;
 };
 
-// Passes of AngleDescent::thin over s, which meets job's target (acute, below 90 or at it),
-// until one takes out under kThinGain of its Steiner points, `passes` at most.
+// Passes of AngleDescent::thin over s, which meets job's target (acute, below 90 or at it, or
+// non-obtuse), until one takes out under kThinGain of its Steiner points, `passes` at most.
 void thinOut(RefineState& s, const Job& job, Insertion& insertion, Boundary& boundary,
              int passes);
 

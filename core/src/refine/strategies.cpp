@@ -312,10 +312,10 @@ class ConcurrentStrategies {
 }  // namespace
 
 void searchFewerPoints(RefineState& s, Refiner& refiner, const Job& job, const Options& search) {
-  // Acute targets (below 90 degrees too): the points the target does not need out first, and
-  // again after each try (AngleDescent::thin: where smoothing lets a point go, which the
-  // polish's removals do not try).
-  const bool thins = job.target.acute && !job.target.nonObtuse;
+  // Acute and non-obtuse targets: the points the target does not need out first, and again
+  // after each try (AngleDescent::thin: where smoothing lets a point go, which the polish's
+  // removals do not try).
+  const bool thins = job.target.boundsLargest();
   Options rest = search;  // (what the thinning leaves of the seconds)
   if (thins) {
     const double start = job.budget.elapsed(), until = job.limits->polishUntil;
