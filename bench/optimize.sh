@@ -25,8 +25,9 @@
 #
 # Environment: OPTIMIZE_SECONDS (default "0 0.1 1 10") the seconds of --optimize per run;
 # OPTIMIZE_PER_CATEGORY (default 2; "all" for the 150) instances per category; OPTIMIZE_MODES
-# (default "nonobtuse acute") the modes; OPTIMIZE_BUILD=0 skips step 1. Issue 27 also asks for 120 s per instance (non-obtuse at the best known): not a
-# default, as the 150 instances then take 150 x 2 x 120 s, 10 hours; run it with
+# (default "nonobtuse acute") the modes; OPTIMIZE_BUILD=0 skips step 1. Issue 27 also asks for
+# 120 s per instance (non-obtuse at the best known): not a default, as the 150 instances then
+# take 150 x 2 x 120 s, 10 hours; run it with
 #   OPTIMIZE_SECONDS="0 10 120" OPTIMIZE_PER_CATEGORY=all npm run bench:optimize
 # (11 hours), or with a smaller OPTIMIZE_PER_CATEGORY for a subset. The default run takes about
 # 10 instances x 2 modes x 11.1 s plus the refinement and the checks: some 4 minutes.

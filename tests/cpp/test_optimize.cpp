@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "acutemesh/acutemesh.h"
 #include "acutemesh/io.h"
@@ -235,45 +236,34 @@ TEST(Optimize, TriesMakeTheSameMeshWithALoadFromAnotherThread) {
   EXPECT_EQ(again.mesh.triangles, first.mesh.triangles);
 }
 
-// Acute meshes are thinned before the search (AngleDescent::thin: each point taken out, its
-// neighbours smoothed, kept out where the target holds): one try takes points off the letter A
-// and the plate, where one try of the kicks and ruins alone took none (71 and 90 points).
-TEST(Optimize, AcuteIsThinnedBeforeTheSearch) {
-  for (const std::string file : {"A.poly", "plate.poly"}) {
+// Meshes are thinned before the search (AngleDescent::thin: each point taken out, its
+// neighbours smoothed, kept out where the target holds): one try takes points off each of
+// these, where one try of the kicks and ruins alone took none (acute: A 71, plate 90;
+// non-obtuse: plate 85, and two CG:SHOP instances meshed with exact altitude feet, 63 and 19,
+// whose feet stay exact).
+TEST(Optimize, IsThinnedBeforeTheSearch) {
+  const std::pair<std::string, Mode> cases[] = {
+      {"A.poly", Mode::Acute},
+      {"plate.poly", Mode::Acute},
+      {"plate.poly", Mode::NonObtuse},
+      {"cgshop/point-set_60_synthetic.instance.json", Mode::NonObtuse},
+      {"cgshop/simple-polygon_40_synthetic.instance.json", Mode::NonObtuse}};
+  for (const auto& [file, mode] : cases) {
+    const std::string what = file + (mode == Mode::Acute ? ", acute" : ", non-obtuse");
     const Input in = fixtures::load(fixtures::kData + "/" + file);
     Options o;
-    o.mode = Mode::Acute;
-    o.threads = 1;
-    const Result base = mesh(in.pslg, o);
-    ASSERT_EQ(base.status, Status::Ok) << file << ": " << base.message;
-    o.optimizeTries = 1;
-    const Result r = mesh(in.pslg, o);
-    ASSERT_EQ(r.status, Status::Ok) << file << ": " << r.message;
-    expectGood(in.pslg, o, r, file);
-    EXPECT_LT(r.stats.steiner, base.stats.steiner) << file;
-  }
-}
-
-// Non-obtuse meshes too: one try takes points off the plate (85 -> 77) and two CG:SHOP
-// instances meshed with exact altitude feet (63 -> 57, 19 -> 15), where one try of the kicks
-// and ruins alone took none; the feet are still exact and every angle at most 90.
-TEST(Optimize, NonObtuseIsThinnedBeforeTheSearch) {
-  for (const std::string file : {"plate.poly", "cgshop/point-set_60_synthetic.instance.json",
-                                 "cgshop/simple-polygon_40_synthetic.instance.json"}) {
-    const Input in = fixtures::load(fixtures::kData + "/" + file);
-    Options o;
-    o.mode = Mode::NonObtuse;
+    o.mode = mode;
     o.threads = 1;
     applyInputPolicy(in, {}, o);
     const Result base = mesh(in.pslg, o);
-    ASSERT_EQ(base.status, Status::Ok) << file << ": " << base.message;
+    ASSERT_EQ(base.status, Status::Ok) << what << ": " << base.message;
     o.optimizeTries = 1;
     const Result r = mesh(in.pslg, o);
-    ASSERT_EQ(r.status, Status::Ok) << file << ": " << r.message;
-    expectGood(in.pslg, o, r, file);
-    EXPECT_LT(r.stats.steiner, base.stats.steiner) << file;
-    if (file != "plate.poly") {
-      EXPECT_GT(r.mesh.exactPoints.size(), 0u) << file << ": no exact feet";
+    ASSERT_EQ(r.status, Status::Ok) << what << ": " << r.message;
+    expectGood(in.pslg, o, r, what);
+    EXPECT_LT(r.stats.steiner, base.stats.steiner) << what;
+    if (o.exactFeet) {
+      EXPECT_GT(r.mesh.exactPoints.size(), 0u) << what << ": no exact feet";
     }
   }
 }

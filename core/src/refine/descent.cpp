@@ -306,7 +306,8 @@ double AngleDescent::violationOf(const RefineState& s, uint32_t t) const {
   if (!T.inDomain(t)) return 0;
   const uint32_t* v = &T.tri[3 * t];
   const double* p[3] = {T.point(v[0]), T.point(v[1]), T.point(v[2])};
-  // (Non-obtuse targets, which only thinning serves: with the corners at exact feet.)
+  // (Non-obtuse targets, which only thinning serves: the target's own test, whose corners at
+  // exact feet may stay right within their slack.)
   if (job_.target.nonObtuse)
     return job_.target.worstCorner(s, t).k < 0
                ? 0
